@@ -1,0 +1,166 @@
+// Edge discretisation by recursive subdivision with the two criteria of Laug & Borouchaki (2016,
+// "Discrete CAD model for visualization and meshing", section 2.1): proximity (chordal distance of
+// the curve to each segment, sampled at 1/4, 1/2, 3/4) and regularity (turn angle between the
+// tangents at a segment's ends, and between each tangent and the chord). Level k subdivides the
+// segments of level k-1 that fail the tolerances of level k, so levels are nested.
+#include "edge_table.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRep_Tool.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+
+#include "model_impl.h"
+#include "parallel.h"
+
+namespace cetview::brep {
+namespace {
+
+double distanceToSegment(const gp_Pnt& p, const gp_Pnt& a, const gp_Pnt& b) {
+  const gp_Vec ab(a, b), ap(a, p);
+  const double len2 = ab.SquareMagnitude();
+  if (len2 <= 0) return ap.Magnitude();
+  const double s = std::clamp(ap.Dot(ab) / len2, 0.0, 1.0);
+  return gp_Vec(a.XYZ() + s * ab.XYZ(), p.XYZ()).Magnitude();
+}
+
+double angleBetween(const gp_Vec& a, const gp_Vec& b) {
+  const double ma = a.Magnitude(), mb = b.Magnitude();
+  if (ma <= 1e-300 || mb <= 1e-300) return 0.0;  // no tangent at a singular point: no angular claim
+  return std::acos(std::clamp(a.Dot(b) / (ma * mb), -1.0, 1.0));
+}
+
+constexpr int kMaxDepth = 24;  // 2^24 segments per coarse segment: beyond any sane tolerance
+
+}  // namespace
+
+EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(model) {
+  const std::size_t n = model.edgeShapes.size();
+  info_.resize(n);
+  levels_.resize(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    levels_[e].resize(levelCount);
+    const TopoDS_Edge edge = TopoDS::Edge(model.edgeShapes[e].Oriented(TopAbs_FORWARD));
+    Info& info = info_[e];
+    info.degenerated = BRep_Tool::Degenerated(edge);
+    BRep_Tool::Range(edge, info.first, info.last);
+    TopoDS_Vertex v0, v1;
+    TopExp::Vertices(edge, v0, v1);
+    if (!v0.IsNull()) info.p0 = BRep_Tool::Pnt(v0);
+    if (!v1.IsNull()) info.p1 = BRep_Tool::Pnt(v1);
+    info.closed = !v0.IsNull() && v0.IsSame(v1);
+    if (info.degenerated) continue;
+    try {
+      BRepAdaptor_Curve curve(edge);
+      info.straight = curve.GetType() == GeomAbs_Line;
+      if (v0.IsNull()) info.p0 = curve.Value(info.first);
+      if (v1.IsNull()) info.p1 = curve.Value(info.last);
+    } catch (const Standard_Failure&) {
+      info.broken = true;
+    }
+  }
+}
+
+bool EdgeTable::discretise(int level, const Level& tolerance, unsigned threads, const std::atomic<bool>* cancel) {
+  std::atomic<bool> cancelled{false};
+  parallelFor(info_.size(), threads, [&](std::size_t e, unsigned) {
+    if (cancelled.load(std::memory_order_relaxed)) return;
+    if (cancel && cancel->load(std::memory_order_relaxed)) {
+      cancelled = true;
+      return;
+    }
+    discretiseEdge(static_cast<EdgeId>(e), level, tolerance);
+  });
+  return !cancelled;
+}
+
+void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
+  const Info& info = info_[e];
+  EdgePoints& out = levels_[e][static_cast<std::size_t>(level)];
+  out.t.clear();
+  out.p.clear();
+  if (info.degenerated) return;
+  if (info.broken) {
+    out.t = {info.first, info.last};
+    out.p = {info.p0, info.p1};
+    return;
+  }
+  const TopoDS_Edge edge = TopoDS::Edge(model_.edgeShapes[e].Oriented(TopAbs_FORWARD));
+  std::vector<double> seedT;
+  if (level > 0) {
+    seedT = levels_[e][static_cast<std::size_t>(level - 1)].t;
+  } else {
+    // Coarsest: one segment for a line, two for a curve, three for a closed edge (a loop of its
+    // own must be a polygon).
+    const int segments = info.closed ? 3 : (info.straight ? 1 : 2);
+    for (int i = 0; i <= segments; ++i) seedT.push_back(info.first + (info.last - info.first) * i / segments);
+  }
+  try {
+    BRepAdaptor_Curve curve(edge);
+    const double minSize = 0.1 * tol.chordal;  // below it the angle criterion is not applied (as BRepMesh's MinSize)
+    auto pointAt = [&](std::size_t i, double t) {
+      if (i == 0) return info.p0;
+      if (i + 1 == seedT.size()) return info.p1;
+      return curve.Value(t);
+    };
+    struct Item { double ta, tb; gp_Pnt pa, pb; gp_Vec da, db; int depth; };
+    std::vector<Item> stack;
+    gp_Pnt pPrev = pointAt(0, seedT[0]);
+    gp_Pnt tmp;
+    gp_Vec dPrev;
+    curve.D1(seedT[0], tmp, dPrev);
+    out.t.push_back(seedT[0]);
+    out.p.push_back(pPrev);
+    for (std::size_t i = 1; i < seedT.size(); ++i) {
+      const gp_Pnt pNext = pointAt(i, seedT[i]);
+      gp_Vec dNext;
+      curve.D1(seedT[i], tmp, dNext);
+      // Depth-first, right half pushed first, so points come out in increasing t.
+      stack.push_back({seedT[i - 1], seedT[i], pPrev, pNext, dPrev, dNext, 0});
+      while (!stack.empty()) {
+        Item s = stack.back();
+        stack.pop_back();
+        bool split = false;
+        if (s.depth < kMaxDepth && s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb))) {
+          const double chord = s.pa.Distance(s.pb);
+          if (!info.straight) {
+            for (double f : {0.5, 0.25, 0.75}) {
+              if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > tol.chordal) {
+                split = true;
+                break;
+              }
+            }
+            if (!split && chord > minSize) {
+              const gp_Vec chordDir(s.pa, s.pb);
+              split = angleBetween(s.da, s.db) > tol.angleRad || angleBetween(s.da, chordDir) > tol.angleRad ||
+                      angleBetween(chordDir, s.db) > tol.angleRad;
+            }
+          }
+        }
+        if (!split) {
+          out.t.push_back(s.tb);
+          out.p.push_back(s.pb);
+          continue;
+        }
+        const double tm = 0.5 * (s.ta + s.tb);
+        gp_Pnt pm;
+        gp_Vec dm;
+        curve.D1(tm, pm, dm);
+        stack.push_back({tm, s.tb, pm, s.pb, dm, s.db, s.depth + 1});
+        stack.push_back({s.ta, tm, s.pa, pm, s.da, dm, s.depth + 1});
+      }
+      pPrev = pNext;
+      dPrev = dNext;
+    }
+  } catch (const Standard_Failure&) {
+    out.t = {info.first, info.last};
+    out.p = {info.p0, info.p1};
+  }
+}
+
+}  // namespace cetview::brep

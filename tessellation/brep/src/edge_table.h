@@ -1,0 +1,54 @@
+// Step 2 of DESIGN.md "Data flow": every edge of the model discretised once per level, shared by
+// the faces that use it (so each completed level is watertight). Nested levels: the parameters of
+// level k contain those of level k-1, so a face refines its boundary by splitting old segments.
+#pragma once
+
+#include <atomic>
+#include <vector>
+
+#include <TopoDS_Edge.hxx>
+#include <gp_Pnt.hxx>
+
+#include "brep/tessellator.h"
+
+namespace cetview::brep {
+
+class ModelImpl;
+
+struct EdgePoints {
+  std::vector<double> t;   // increasing curve parameters, first and last are the edge's ends
+  std::vector<gp_Pnt> p;   // 3D points in part coordinates; the ends are the edge's vertices
+};
+
+class EdgeTable {
+ public:
+  EdgeTable(const ModelImpl& model, std::size_t levelCount);
+
+  // Discretises every non-degenerate edge for level k (after level k-1). Returns false if cancelled.
+  bool discretise(int level, const Level& tolerance, unsigned threads, const std::atomic<bool>* cancel);
+
+  bool degenerated(EdgeId e) const { return info_[e].degenerated; }
+  // The points of edge e at level k (discretise(k) has returned). Degenerate edges have none.
+  const EdgePoints& points(EdgeId e, int level) const { return levels_[e][static_cast<std::size_t>(level)]; }
+  double first(EdgeId e) const { return info_[e].first; }
+  double last(EdgeId e) const { return info_[e].last; }
+  const gp_Pnt& firstPoint(EdgeId e) const { return info_[e].p0; }
+  const gp_Pnt& lastPoint(EdgeId e) const { return info_[e].p1; }
+
+ private:
+  struct Info {
+    double first = 0, last = 0;
+    gp_Pnt p0, p1;  // vertex positions at first and last
+    bool degenerated = false;
+    bool straight = false;  // a line: one segment is exact
+    bool closed = false;    // both ends are the same vertex
+    bool broken = false;    // no usable curve: the chord between its vertices stands in for it
+  };
+  void discretiseEdge(EdgeId e, int level, const Level& tolerance);
+
+  const ModelImpl& model_;
+  std::vector<Info> info_;
+  std::vector<std::vector<EdgePoints>> levels_;  // [edge][level], sized up front (no reallocation)
+};
+
+}  // namespace cetview::brep

@@ -1,0 +1,106 @@
+#include "surface_eval.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLib.hxx>
+
+namespace cetview::brep {
+
+SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False) {
+  geom_ = BRep_Tool::Surface(face);
+  uPeriodic_ = surface_.IsUPeriodic();
+  vPeriodic_ = surface_.IsVPeriodic();
+  su0_ = surface_.FirstUParameter(), su1_ = surface_.LastUParameter();
+  sv0_ = surface_.FirstVParameter(), sv1_ = surface_.LastVParameter();
+  BRepTools::UVBounds(face, uMin, uMax, vMin, vMax);
+  if (!(uMax >= uMin) || !(vMax >= vMin) || !std::isfinite(uMin) || !std::isfinite(vMax)) {
+    uMin = std::max(su0_, -1e6), uMax = std::min(su1_, 1e6), vMin = std::max(sv0_, -1e6), vMax = std::min(sv1_, 1e6);
+  }
+  u0 = uMin, v0 = vMin;
+  // Mean |Su| and |Sv| on a 5x5 grid over the parameter box.
+  double lu = 0, lv = 0;
+  int n = 0;
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      const double u = uMin + (uMax - uMin) * (i + 0.5) / 5, v = vMin + (vMax - vMin) * (j + 0.5) / 5;
+      gp_Pnt p;
+      gp_Vec du, dv;
+      surface_.D1(u, v, p, du, dv);
+      lu += du.Magnitude(), lv += dv.Magnitude();
+      ++n;
+    }
+  }
+  lu /= n, lv /= n;
+  const double floor = 1e-9 * std::max({lu, lv, 1e-300});
+  su = std::max(lu, floor);
+  sv = std::max(lv, floor);
+  if (!(su > 0) || !std::isfinite(su)) su = 1;
+  if (!(sv > 0) || !std::isfinite(sv)) sv = 1;
+}
+
+bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
+  gp_Vec du, dv;
+  surface_.D1(u, v, p, du, dv);
+  const gp_Vec c = du.Crossed(dv);
+  const double m = c.Magnitude();
+  if (m > 1e-12 * du.Magnitude() * dv.Magnitude() && m > 1e-300) {
+    n = gp_Dir(c);
+    return true;
+  }
+  gp_Dir estimated;
+  if (GeomLib::NormEstim(geom_, gp_Pnt2d(u, v), 1e-7, estimated) <= 1) {
+    n = estimated;
+    return false;
+  }
+  // Last resort: the normal a small step towards the middle of the face's parameter box.
+  const double um = 0.5 * (uMin + uMax), vm = 0.5 * (vMin + vMax);
+  for (double f : {1e-6, 1e-4, 1e-2}) {
+    gp_Pnt q;
+    surface_.D1(u + f * (um - u), v + f * (vm - v), q, du, dv);
+    const gp_Vec c2 = du.Crossed(dv);
+    if (c2.Magnitude() > 1e-300) {
+      n = gp_Dir(c2);
+      return false;
+    }
+  }
+  n = gp_Dir(0, 0, 1);
+  return false;
+}
+
+double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter) const {
+  gp_Pnt s;
+  gp_Vec du, dv;
+  double best = 1e300, bu = u, bv = v;
+  for (int it = 0; it <= maxIter; ++it) {
+    surface_.D1(u, v, s, du, dv);
+    const gp_Vec r(s, m);
+    const double d = r.Magnitude();
+    if (d < best) best = d, bu = u, bv = v;
+    if (it == maxIter || d == 0) break;
+    // Gauss-Newton: [Su.Su Su.Sv; Su.Sv Sv.Sv] (du dv) = (r.Su, r.Sv), lightly damped for poles.
+    const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv);
+    const double ru = r.Dot(du), rv = r.Dot(dv);
+    const double damp = 1e-12 * (a + c) + 1e-300;
+    const double det = (a + damp) * (c + damp) - b * b;
+    if (!(std::abs(det) > 0)) break;
+    double stepU = (ru * (c + damp) - rv * b) / det, stepV = ((a + damp) * rv - b * ru) / det;
+    // Stop when the step moves the foot point by a negligible fraction of the residual.
+    const double move = (stepU * du + stepV * dv).Magnitude();
+    u += stepU, v += stepV;
+    if (!uPeriodic_) u = std::clamp(u, su0_, su1_);
+    if (!vPeriodic_) v = std::clamp(v, sv0_, sv1_);
+    if (move < 1e-3 * d) {
+      const gp_Pnt s2 = surface_.Value(u, v);
+      const double d2 = s2.Distance(m);
+      if (d2 < best) best = d2, bu = u, bv = v;
+      break;
+    }
+  }
+  u = bu, v = bv;
+  return best;
+}
+
+}  // namespace cetview::brep

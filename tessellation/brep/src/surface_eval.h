@@ -1,0 +1,45 @@
+// Evaluation of one face's exact surface: points and normals for new vertices, the UV scaling of
+// DESIGN.md step 3, and local orthogonal projection (the deviation measure). One instance per
+// thread: the adaptor caches B-spline spans.
+#pragma once
+
+#include <BRepAdaptor_Surface.hxx>
+#include <Geom_Surface.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
+#include <gp_Vec.hxx>
+
+namespace cetview::brep {
+
+class SurfaceEval {
+ public:
+  explicit SurfaceEval(const TopoDS_Face& face);
+
+  const BRepAdaptor_Surface& adaptor() const { return surface_; }
+
+  // Point and unit natural normal (Su x Sv) at (u, v). Returns false where the normal is not
+  // defined by first derivatives (poles, apexes); the normal then comes from higher derivatives or
+  // the neighbourhood, and may still be a poor choice for angle tests.
+  bool pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
+  gp_Pnt point(double u, double v) const { return surface_.Value(u, v); }
+
+  // Distance from m to the surface, by Gauss-Newton from (u, v) (updated to the foot point). Each
+  // iterate is a surface point, so the result never underestimates the distance to the nearest
+  // point found. maxIter bounds the derivative evaluations.
+  double project(const gp_Pnt& m, double& u, double& v, int maxIter) const;
+
+  // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
+  // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
+  // shapes about as in 3D.
+  double u0 = 0, v0 = 0, su = 1, sv = 1;
+  double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
+
+ private:
+  BRepAdaptor_Surface surface_;
+  Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
+  bool uPeriodic_ = false, vPeriodic_ = false;
+  double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
+};
+
+}  // namespace cetview::brep
