@@ -11,7 +11,8 @@ namespace cet {
 // vertices), L of every inserted vertex names a triangle containing it, flags consistent across an
 // edge (1 on one side is 2 on the other, 0 and 3 on both), every finite triangle strictly
 // counter-clockwise (exact orient2d), exactly one infinite vertex per ghost, the outside bit equal on
-// both sides of every unconstrained edge. Returns an empty string when valid, else the first problem.
+// both sides of every unconstrained edge between finite
+// triangles (ghosts are outside by definition). Returns an empty string when valid, else the first problem.
 std::string checkTopology(const CetMesh& mesh);
 
 // Every unconstrained edge is locally Delaunay by the exact in-circle test (ghost edges: the hull
