@@ -109,7 +109,6 @@ class Triangulator {
   Location locate(Point2 p, TriangleId start) const;
   bool buildFirstTriangle();
   InsertOutcome insertLocated(VertexId v, const Location& loc);
-  void restoreDelaunayAround(VertexId v);
   void legalizeEdges(std::vector<std::pair<VertexId, VertexId>>& stack);
   Status insertSegmentPiece(VertexId a, VertexId b, VertexId* reached);
   void setConstraintFlags(VertexId a, VertexId b);
@@ -117,6 +116,7 @@ class Triangulator {
   CetMesh mesh_;
   VertexId firstPending_ = 0;  // vertices [firstPending_, vertexCount) are not inserted yet
   bool domainMarked_ = false;
+  std::size_t segmentCount_ = 0;  // segments inserted so far (markDomain floods the hull only if > 0)
   TriangleId lastTouched_ = kNoTriangle;
   std::unordered_map<VertexId, VertexId> merged_;
   // Reused scratch arrays (hot paths do not allocate per point).

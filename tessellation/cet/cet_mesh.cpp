@@ -1,0 +1,259 @@
+// CET operators (Yang & Choi 2010, Table 1): retrieval, traversal and modification of the arrays.
+#include "cet_mesh.h"
+
+namespace cet {
+
+void CetMesh::reserve(std::size_t vertices, std::size_t triangles) {
+  points_.reserve(vertices);
+  L_.reserve(vertices);
+  triangles_.reserve(triangles);
+}
+
+void CetMesh::clear() {
+  points_.clear();
+  L_.clear();
+  triangles_.clear();
+}
+
+int CetMesh::ghostIndex(TriangleId t) const {
+  const Triangle& tr = triangles_[t];
+  if (tr.M[0] == kInfiniteVertex) return 0;
+  if (tr.M[1] == kInfiniteVertex) return 1;
+  if (tr.M[2] == kInfiniteVertex) return 2;
+  return -1;
+}
+
+int CetMesh::indexOf(TriangleId t, VertexId v) const {
+  const Triangle& tr = triangles_[t];
+  if (tr.M[0] == v) return 0;
+  if (tr.M[1] == v) return 1;
+  if (tr.M[2] == v) return 2;
+  return -1;
+}
+
+int CetMesh::edgeTo(TriangleId t, TriangleId n) const {
+  const Triangle& tr = triangles_[t];
+  if (tr.N[0] == n) return 0;
+  if (tr.N[1] == n) return 1;
+  if (tr.N[2] == n) return 2;
+  return -1;
+}
+
+EdgeRef CetMesh::twin(EdgeRef e) const {
+  const TriangleId u = neighbor(e.t, e.i);
+  // The neighbour's copy of the edge is opposite the vertex that is not on it; with two triangles
+  // sharing two edges (possible only between ghosts of a 2-point hull, which never exists here),
+  // the vertex test is the unambiguous one.
+  const VertexId a = edgeOrigin(e);
+  const Triangle& tu = triangles_[u];
+  for (int j = 0; j < 3; ++j) {
+    if (tu.N[j] == e.t && tu.M[prev3(j)] == a) return EdgeRef{u, j};
+  }
+  assert(false && "neighbour does not point back");
+  return EdgeRef{};
+}
+
+TriangleId CetMesh::nextAround(TriangleId t, VertexId v) const {
+  const int k = indexOf(t, v);
+  assert(k >= 0);
+  // t = (v, x, y) counter-clockwise: the next triangle shares edge (v, y), the one opposite x.
+  return neighbor(t, next3(k));
+}
+
+TriangleId CetMesh::prevAround(TriangleId t, VertexId v) const {
+  const int k = indexOf(t, v);
+  assert(k >= 0);
+  return neighbor(t, prev3(k));
+}
+
+EdgeRef CetMesh::findEdge(VertexId a, VertexId b) const {
+  const TriangleId start = L_[a];
+  if (start == kNoTriangle) return EdgeRef{};
+  TriangleId t = start;
+  do {
+    const int k = indexOf(t, a);
+    // In t = (a, x, y) the edge a -> x runs counter-clockwise: it is the edge opposite y.
+    if (triangles_[t].M[next3(k)] == b) return EdgeRef{t, prev3(k)};
+    t = neighbor(t, next3(k));
+  } while (t != start);
+  return EdgeRef{};
+}
+
+VertexId CetMesh::addVertex(Point2 p) {
+  points_.push_back(p);
+  L_.push_back(kNoTriangle);
+  return static_cast<VertexId>(points_.size() - 1);
+}
+
+void CetMesh::popVertex() {
+  assert(!points_.empty() && L_.back() == kNoTriangle);
+  points_.pop_back();
+  L_.pop_back();
+}
+
+TriangleId CetMesh::addTriangle(VertexId a, VertexId b, VertexId c) {
+  triangles_.push_back(Triangle{{a, b, c}, {kNoTriangle, kNoTriangle, kNoTriangle}, 0});
+  const auto t = static_cast<TriangleId>(triangles_.size() - 1);
+  touchVertices(t);
+  return t;
+}
+
+void CetMesh::link(TriangleId t, int i, TriangleId u, int j) {
+  triangles_[t].N[i] = u;
+  triangles_[u].N[j] = t;
+}
+
+void CetMesh::setFlagOneSide(TriangleId t, int i, EdgeFlag f) {
+  std::uint8_t& bits = triangles_[t].bits;
+  const int shift = 2 * i;
+  bits = static_cast<std::uint8_t>((bits & ~(3u << shift)) | (static_cast<unsigned>(f) << shift));
+}
+
+void CetMesh::setFlag(TriangleId t, int i, EdgeFlag f) {
+  const EdgeRef other = twin(EdgeRef{t, i});
+  setFlagOneSide(t, i, f);
+  setFlagOneSide(other.t, other.i, twinFlag(f));
+}
+
+void CetMesh::setOutside(TriangleId t, bool outside) {
+  std::uint8_t& bits = triangles_[t].bits;
+  bits = static_cast<std::uint8_t>(outside ? (bits | kOutsideBit) : (bits & ~kOutsideBit));
+}
+
+void CetMesh::touchVertices(TriangleId t) {
+  const Triangle& tr = triangles_[t];
+  for (VertexId v : tr.M) {
+    if (v != kInfiniteVertex) L_[v] = t;
+  }
+}
+
+void CetMesh::flip(TriangleId t, int i) {
+  const TriangleId u = triangles_[t].N[i];
+  const EdgeRef tw = twin(EdgeRef{t, i});
+  const int j = tw.i;
+  const Triangle T = triangles_[t];
+  const Triangle U = triangles_[u];
+  assert(flag(t, i) == kUnconstrained);
+
+  const VertexId a = T.M[i], b = T.M[next3(i)], c = T.M[prev3(i)];
+  const VertexId d = U.M[j];
+  // Outer edges: (b, d) was U's edge opposite c, (d, c) U's edge opposite b,
+  //              (c, a) T's edge opposite b, (a, b) T's edge opposite c.
+  const int uOppC = next3(j), uOppB = prev3(j);
+  const int tOppB = next3(i), tOppC = prev3(i);
+  const TriangleId nBD = U.N[uOppC], nDC = U.N[uOppB], nCA = T.N[tOppB], nAB = T.N[tOppC];
+  const auto fBD = static_cast<unsigned>((U.bits >> (2 * uOppC)) & 3u);
+  const auto fDC = static_cast<unsigned>((U.bits >> (2 * uOppB)) & 3u);
+  const auto fCA = static_cast<unsigned>((T.bits >> (2 * tOppB)) & 3u);
+  const auto fAB = static_cast<unsigned>((T.bits >> (2 * tOppC)) & 3u);
+  const std::uint8_t tOut = T.bits & kOutsideBit, uOut = U.bits & kOutsideBit;
+
+  // t' = (a, b, d): opposite a (b, d), opposite b (d, a) = u', opposite d (a, b).
+  Triangle& nt = triangles_[t];
+  nt.M[0] = a, nt.M[1] = b, nt.M[2] = d;
+  nt.N[0] = nBD, nt.N[1] = u, nt.N[2] = nAB;
+  nt.bits = static_cast<std::uint8_t>(fBD | (fAB << 4) | tOut);
+  // u' = (a, d, c): opposite a (d, c), opposite d (c, a), opposite c (a, d) = t'.
+  Triangle& nu = triangles_[u];
+  nu.M[0] = a, nu.M[1] = d, nu.M[2] = c;
+  nu.N[0] = nDC, nu.N[1] = nCA, nu.N[2] = t;
+  nu.bits = static_cast<std::uint8_t>(fDC | (fCA << 2) | uOut);
+
+  // The two outer triangles that changed owner point back to their new neighbour.
+  {
+    Triangle& o = triangles_[nBD];
+    for (TriangleId& n : o.N) {
+      if (n == u) { n = t; break; }
+    }
+  }
+  {
+    Triangle& o = triangles_[nCA];
+    for (TriangleId& n : o.N) {
+      if (n == t) { n = u; break; }
+    }
+  }
+  if (a != kInfiniteVertex) L_[a] = t;
+  if (b != kInfiniteVertex) L_[b] = t;
+  if (d != kInfiniteVertex) L_[d] = t;
+  if (c != kInfiniteVertex) L_[c] = u;
+}
+
+SplitResult CetMesh::splitTriangle(TriangleId t, VertexId v) {
+  const Triangle T = triangles_[t];
+  const VertexId a = T.M[0], b = T.M[1], c = T.M[2];
+  const std::uint8_t out = T.bits & kOutsideBit;
+  const auto t0 = t;
+  const auto t1 = static_cast<TriangleId>(triangles_.size());
+  const auto t2 = t1 + 1;
+  const auto f = [&](int i) { return static_cast<std::uint8_t>((T.bits >> (2 * i)) & 3u); };
+  // t0 = (v, b, c), t1 = (v, c, a), t2 = (v, a, b); edge 0 of each is an old edge of t.
+  triangles_[t0] = Triangle{{v, b, c}, {T.N[0], t1, t2}, static_cast<std::uint8_t>(f(0) | out)};
+  triangles_.push_back(Triangle{{v, c, a}, {T.N[1], t2, t0}, static_cast<std::uint8_t>(f(1) | out)});
+  triangles_.push_back(Triangle{{v, a, b}, {T.N[2], t0, t1}, static_cast<std::uint8_t>(f(2) | out)});
+  // Old outer neighbours across (c, a) and (a, b) now see t1 and t2.
+  for (TriangleId& n : triangles_[T.N[1]].N) {
+    if (n == t) { n = t1; break; }
+  }
+  for (TriangleId& n : triangles_[T.N[2]].N) {
+    if (n == t) { n = t2; break; }
+  }
+  L_[v] = t0;
+  if (a != kInfiniteVertex) L_[a] = t1;
+  if (b != kInfiniteVertex) L_[b] = t0;
+  if (c != kInfiniteVertex) L_[c] = t0;
+  SplitResult r;
+  r.t[0] = t0, r.t[1] = t1, r.t[2] = t2, r.count = 3;
+  return r;
+}
+
+SplitResult CetMesh::splitEdge(TriangleId t, int i, VertexId v) {
+  const TriangleId u = triangles_[t].N[i];
+  const int j = twin(EdgeRef{t, i}).i;
+  const Triangle T = triangles_[t];
+  const Triangle U = triangles_[u];
+  const VertexId a = T.M[i], b = T.M[next3(i)], c = T.M[prev3(i)];
+  const VertexId d = U.M[j];
+  const auto tf = [&](int k) { return static_cast<std::uint8_t>((T.bits >> (2 * k)) & 3u); };
+  const auto uf = [&](int k) { return static_cast<std::uint8_t>((U.bits >> (2 * k)) & 3u); };
+  const std::uint8_t tOut = T.bits & kOutsideBit, uOut = U.bits & kOutsideBit;
+  const std::uint8_t fT = tf(i), fU = uf(j);  // the split edge, seen from t (b -> c) and u (c -> b)
+
+  const TriangleId nCA = T.N[next3(i)], nAB = T.N[prev3(i)];
+  const TriangleId nBD = U.N[next3(j)], nDC = U.N[prev3(j)];
+  const std::uint8_t fCA = tf(next3(i)), fAB = tf(prev3(i));
+  const std::uint8_t fBD = uf(next3(j)), fDC = uf(prev3(j));
+
+  const TriangleId t1 = t;  // (v, c, a)
+  const auto t2 = static_cast<TriangleId>(triangles_.size());  // (v, a, b)
+  const TriangleId t3 = u;  // (v, b, d)
+  const auto t4 = t2 + 1;   // (v, d, c)
+  // Each: edge 0 the old outer edge; the halves of the split edge are (v, c) in t1 (edge 2),
+  // (b, v) in t2 (edge 1), (v, b) in t3 (edge 2), (c, v) in t4 (edge 1).
+  triangles_[t1] = Triangle{{v, c, a}, {nCA, t2, t4}, static_cast<std::uint8_t>(fCA | (fT << 4) | tOut)};
+  triangles_.push_back(Triangle{{v, a, b}, {nAB, t3, t1}, static_cast<std::uint8_t>(fAB | (fT << 2) | tOut)});
+  triangles_[t3] = Triangle{{v, b, d}, {nBD, t4, t2}, static_cast<std::uint8_t>(fBD | (fU << 4) | uOut)};
+  triangles_.push_back(Triangle{{v, d, c}, {nDC, t1, t3}, static_cast<std::uint8_t>(fDC | (fU << 2) | uOut)});
+
+  for (TriangleId& n : triangles_[nAB].N) {
+    if (n == t) { n = t2; break; }
+  }
+  for (TriangleId& n : triangles_[nDC].N) {
+    if (n == u) { n = t4; break; }
+  }
+  L_[v] = t1;
+  if (a != kInfiniteVertex) L_[a] = t1;
+  if (b != kInfiniteVertex) L_[b] = t2;
+  if (c != kInfiniteVertex) L_[c] = t1;
+  if (d != kInfiniteVertex) L_[d] = t3;
+  SplitResult r;
+  r.t[0] = t1, r.t[1] = t2, r.t[2] = t3, r.t[3] = t4, r.count = 4;
+  return r;
+}
+
+std::size_t CetMesh::bytesVertices() const {
+  return points_.capacity() * sizeof(Point2) + L_.capacity() * sizeof(TriangleId);
+}
+
+std::size_t CetMesh::bytesTriangles() const { return triangles_.capacity() * sizeof(Triangle); }
+
+}  // namespace cet

@@ -1,0 +1,95 @@
+// orient2d and incircle against CGAL's exact predicates on the inputs that break naive floating
+// point: nearly collinear and nearly co-circular points, at scales from 1e-12 to 1e12.
+#include "cet/predicates.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace cet {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+int sign(double v) { return v > 0 ? 1 : v < 0 ? -1 : 0; }
+K::Point_2 cg(Point2 p) { return K::Point_2(p.x, p.y); }
+
+int referenceOrient(Point2 a, Point2 b, Point2 c) { return static_cast<int>(CGAL::orientation(cg(a), cg(b), cg(c))); }
+int referenceIncircle(Point2 a, Point2 b, Point2 c, Point2 d) {
+  return static_cast<int>(CGAL::side_of_oriented_circle(cg(a), cg(b), cg(c), cg(d)));
+}
+
+TEST(Predicates, NearlyCollinearGridOfUlps) {
+  // Shewchuk's classic failure case: a 256x256 grid of points ulps apart near (0.5, 0.5) against the
+  // line through (12, 12) and (24, 24). Naive evaluation gets a large share of these wrong.
+  const double ulp = std::ldexp(1.0, -53);
+  int exactZero = 0, checked = 0;
+  for (double scale : {1e-12, 1.0, 1e12}) {
+    for (int i = 0; i < 256; ++i) {
+      for (int j = 0; j < 256; j += 3) {
+        const Point2 a{(0.5 + i * ulp) * scale, (0.5 + j * ulp) * scale};
+        const Point2 b{12 * scale, 12 * scale}, c{24 * scale, 24 * scale};
+        const int expected = referenceOrient(a, b, c);
+        ASSERT_EQ(sign(orient2d(a, b, c)), expected) << i << "," << j << " scale " << scale;
+        ASSERT_EQ(sign(orient2d(b, c, a)), expected);
+        ASSERT_EQ(sign(orient2d(b, a, c)), -expected);
+        exactZero += expected == 0;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(exactZero, 0);
+  EXPECT_GT(predicateStats().orientExact, 0u) << "the exact fallback must have run";
+}
+
+TEST(Predicates, ExactlyCollinearAndCoCircularGiveZero) {
+  EXPECT_EQ(orient2d({0, 0}, {1, 1}, {1e12, 1e12}), 0.0);
+  EXPECT_EQ(orient2d({0.1, 0.1}, {0.2, 0.2}, {0.3, 0.3}) == 0.0, referenceOrient({0.1, 0.1}, {0.2, 0.2}, {0.3, 0.3}) == 0);
+  EXPECT_EQ(incircle({0, 0}, {1, 0}, {1, 1}, {0, 1}), 0.0);
+  EXPECT_EQ(incircle({-3, 4}, {5, 0}, {0, 5}, {4, -3}), 0.0);  // the circle of radius 5
+  EXPECT_GT(incircle({0, 0}, {1, 0}, {0, 1}, {0.5, 0.5}), 0.0);
+  EXPECT_LT(incircle({0, 0}, {1, 0}, {0, 1}, {2, 2}), 0.0);
+}
+
+TEST(Predicates, NearlyCoCircularOnRoundedCircles) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+  std::uniform_int_distribution<int> ulps(-4, 4);
+  int zero = 0, nonZero = 0;
+  for (double scale : {1e-12, 1e-3, 1.0, 1e5, 1e12}) {
+    for (int k = 0; k < 4000; ++k) {
+      Point2 p[4];
+      for (auto& q : p) {
+        const double t = angle(rng);
+        q = {scale * std::cos(t), scale * std::sin(t)};
+      }
+      // Nudge d by a few ulps so it falls just inside, on, or just outside.
+      p[3].x = std::nextafter(p[3].x, ulps(rng) > 0 ? 1e300 : -1e300);
+      const int expected = referenceIncircle(p[0], p[1], p[2], p[3]);
+      ASSERT_EQ(sign(incircle(p[0], p[1], p[2], p[3])), expected) << "scale " << scale << " case " << k;
+      ASSERT_EQ(sign(incircle(p[1], p[2], p[0], p[3])), expected);
+      ASSERT_EQ(sign(incircle(p[1], p[0], p[2], p[3])), -expected);
+      (expected == 0 ? zero : nonZero)++;
+    }
+  }
+  EXPECT_GT(nonZero, 0);
+  EXPECT_GT(predicateStats().incircleExact, 0u);
+}
+
+TEST(Predicates, IntegerGridCoCircularAndRandomAgreeWithCgal) {
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int> small(-3, 3);
+  for (double scale : {1e-12, 1.0, 1e12}) {
+    for (int k = 0; k < 20000; ++k) {
+      Point2 p[4];
+      for (auto& q : p) q = {small(rng) * scale, small(rng) * scale};
+      ASSERT_EQ(sign(orient2d(p[0], p[1], p[2])), referenceOrient(p[0], p[1], p[2]));
+      ASSERT_EQ(sign(incircle(p[0], p[1], p[2], p[3])), referenceIncircle(p[0], p[1], p[2], p[3]));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cet

@@ -1,0 +1,11 @@
+// The cetview subcommands. Each adds itself to the CLI11 app; its callback sets exitCode:
+// 0 success, 1 a runtime failure, 2 bad input or usage.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace cetview {
+
+void addCdtCommand(CLI::App& app, int& exitCode);
+
+}  // namespace cetview
