@@ -1,0 +1,47 @@
+// Side-by-side benchmark of cetview's tessellation and OpenCASCADE's BRepMesh_IncrementalMesh on
+// one model, in one process, at the same absolute deflection and angle (DESIGN.md "Benchmarks").
+// Both meshes are measured by the same code (brep/measure.h, brep/mesh_check.h).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "brep/tolerance.h"
+
+namespace cetview::brep {
+
+struct BenchOptions {
+  MeshParams params;
+  unsigned threads = 0;  // the parallel runs; 0: all hardware threads
+  bool measure = true;   // deviation, cracks, degenerate triangles (slower than meshing)
+};
+
+struct BenchResult {
+  std::string model;
+  std::string error;  // set when the model could not be loaded or meshed; the numbers are then zero
+  std::size_t faces = 0;
+  double deflection = 0;  // absolute
+  double angleDeg = 0;
+  unsigned threads = 1;
+  double load_ms = 0;
+  double cetview_ms = 0;          // all coarse-to-fine levels, one thread (what the viewer does)
+  double cetview_ms_threads = 0;  // the same with `threads` threads
+  double cetview_direct_ms = 0;   // the final level alone, one thread
+  double brepmesh_ms = 0;
+  double brepmesh_ms_threads = 0;
+  std::size_t levels = 0;
+  std::size_t cetview_triangles = 0, brepmesh_triangles = 0;
+  double cetview_max_dev = 0, brepmesh_max_dev = 0;
+  std::size_t cetview_faces_over = 0, brepmesh_faces_over = 0;  // faces measured above the deflection
+  std::size_t cetview_cracks = 0, brepmesh_cracks = 0;          // open edges after welding, closed parts only
+  std::size_t cetview_degenerate = 0, brepmesh_degenerate = 0;
+  double cetview_peak_mb = 0, brepmesh_peak_mb = 0;             // peak heap growth while meshing
+  std::size_t repaired_faces = 0, fallback_faces = 0, empty_faces = 0;
+};
+
+BenchResult benchModel(const std::string& path, const BenchOptions& options);
+
+// One JSON object on one line.
+std::string benchJson(const BenchResult& r);
+
+}  // namespace cetview::brep

@@ -1,0 +1,24 @@
+// Measured quality of a tessellation against the exact surfaces: the numbers the deviation promise
+// (DESIGN.md "Tolerance semantics") and the bench are about.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace cetview::brep {
+
+class Tessellator;
+
+struct FaceQuality {
+  double maxDeviation = 0;    // largest distance from the mesh to the exact surface
+  std::size_t triangles = 0;
+  std::size_t degenerate = 0; // zero-area triangles (|cross| <= 1e-12 * longest edge squared)
+  std::size_t flipped = 0;    // triangles facing against their corners' surface normals
+};
+
+// Measures level `level` of every face (each face's last level for -1). The deviation is sampled at
+// 13 points of every triangle (the centroid and a barycentric grid of step 1/4 without the corners),
+// each projected onto the exact surface by Newton iteration from its interpolated (u, v).
+std::vector<FaceQuality> measureFaces(const Tessellator& t, int level = -1, unsigned threads = 1);
+
+}  // namespace cetview::brep

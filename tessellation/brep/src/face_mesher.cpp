@@ -1,0 +1,503 @@
+// Coarse-to-fine meshing of one face on the CET triangulator.
+//
+// Sources: Yang & Choi (2010) for the CET arrays and the sequential constrained Delaunay insertion;
+// Eryar, "Delaunay surface visualization", for faces as constrained triangulations of their trimming
+// loops in UV with holes removed by orientation; Laug & Borouchaki (2016) for the proximity and
+// regularity criteria, applied here to triangles: a triangle is split where the exact surface
+// deviates from it by more than the level's chordal tolerance (sampled at the centroid and the
+// midpoints of unconstrained edges, each sample projected onto the surface), where the surface
+// normals at its corners differ by more than the angular tolerance, or where it faces against the
+// surface normals.
+#include "face_mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include <Standard_Failure.hxx>
+
+#include "brepmesh_fallback.h"
+#include "edge_table.h"
+
+namespace cetview::brep {
+namespace {
+
+// Passes of batch insertion per level; each pass at least halves the offending triangles' size, so
+// this bounds a level's refinement depth, not its work.
+constexpr int kMaxPasses = 60;
+
+double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::VertexId>& loop) {
+  double a = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const cet::Point2 p = pts[loop[i]], q = pts[loop[(i + 1) % loop.size()]];
+    a += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * a;
+}
+
+}  // namespace
+
+FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings)
+    : topology_(std::move(topology)), settings_(settings), eval_(topology_.face) {
+  for (const std::string& r : topology_.repairs) repairs_.push_back(r);
+  repaired_ = !repairs_.empty();
+}
+
+void FaceMesher::appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p) {
+  gp_Pnt s;
+  gp_Dir n;
+  const bool regular = eval_.pointNormal(u, v, s, n);
+  const gp_Pnt& q = p ? *p : s;
+  mesh.positions.insert(mesh.positions.end(), {q.X(), q.Y(), q.Z()});
+  const double sign = settings_.reversed ? -1.0 : 1.0;
+  mesh.normals.insert(mesh.normals.end(), {static_cast<float>(sign * n.X()), static_cast<float>(sign * n.Y()),
+                                           static_cast<float>(sign * n.Z())});
+  mesh.uv.insert(mesh.uv.end(), {u, v});
+  normal_.push_back(n);
+  singular_.push_back(regular ? 0 : 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Level 0 (or a rebuild): the whole domain from the edge points of level k.
+bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem) {
+  cdt_ = std::make_unique<cet::Triangulator>();
+  base_ = static_cast<std::uint32_t>(mesh.vertexCount());
+  normal_.clear();
+  singular_.clear();
+  occurrences_.clear();
+  cache_.clear();
+  points_.clear();
+
+  // Points of each occurrence in increasing parameter: natural UV and 3D.
+  struct OccPoints {
+    std::vector<gp_Pnt2d> uv;
+    std::vector<gp_Pnt> p;
+  };
+  std::vector<std::vector<OccPoints>> occPoints(topology_.loops.size());
+  for (std::size_t l = 0; l < topology_.loops.size(); ++l) {
+    const auto& loop = topology_.loops[l];
+    occPoints[l].resize(loop.size());
+    double lengthSum = 0;
+    std::size_t segmentCount = 0;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const LoopEdge& le = loop[i];
+      if (le.degenerated) continue;
+      const EdgePoints& ep = edges.points(le.edge, k);
+      OccPoints& op = occPoints[l][i];
+      for (std::size_t j = 0; j < ep.t.size(); ++j) {
+        op.uv.push_back(le.pcurve->Value(le.pcurveParameter(ep.t[j])).Translated(le.shift));
+        op.p.push_back(ep.p[j]);
+        if (j > 0) {
+          const cet::Point2 a = scaled(op.uv[j - 1].X(), op.uv[j - 1].Y()), b = scaled(op.uv[j].X(), op.uv[j].Y());
+          lengthSum += std::hypot(b.x - a.x, b.y - a.y);
+          ++segmentCount;
+        }
+      }
+    }
+    // Degenerate edges (poles, apexes) belong to this face alone: split them so their segments are
+    // about as long in scaled UV as the loop's others, which keeps the triangles fanning into the
+    // pole well shaped in UV.
+    const double typical = segmentCount ? lengthSum / static_cast<double>(segmentCount) : 0.0;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const LoopEdge& le = loop[i];
+      if (!le.degenerated) continue;
+      const gp_Pnt2d a = le.pcurve->Value(le.pcurveFirst).Translated(le.shift);
+      const gp_Pnt2d b = le.pcurve->Value(le.pcurveLast).Translated(le.shift);
+      const cet::Point2 sa = scaled(a.X(), a.Y()), sb = scaled(b.X(), b.Y());
+      const double len = std::hypot(sb.x - sa.x, sb.y - sa.y);
+      const int n = typical > 0 ? std::clamp(static_cast<int>(std::lround(len / typical)), 1, 256) : 4;
+      OccPoints& op = occPoints[l][i];
+      for (int j = 0; j <= n; ++j) {
+        const double t = le.pcurveFirst + (le.pcurveLast - le.pcurveFirst) * j / n;
+        op.uv.push_back(le.pcurve->Value(t).Translated(le.shift));
+        op.p.push_back(le.pole);
+      }
+    }
+  }
+
+  // Loops as polygons of triangulator ids in loop direction. Consecutive occurrences share their
+  // junction point when their pcurves meet; a gap in UV stays as a short segment whose two ends are
+  // the same 3D vertex (the triangles on it have no area and are dropped).
+  const double mergeDistance = std::max(0.1 * settings_.finalChordal, 1e-12);
+  auto newPoint = [&](const gp_Pnt2d& uv, const gp_Pnt& p) {
+    const cet::VertexId id = static_cast<cet::VertexId>(points_.size());
+    points_.push_back(scaled(uv.X(), uv.Y()));
+    appendVertex(mesh, uv.X(), uv.Y(), &p);
+    return id;
+  };
+  auto close = [&](cet::VertexId a, const gp_Pnt2d& uv) {
+    const cet::Point2 p = points_[a], q = scaled(uv.X(), uv.Y());
+    return std::hypot(p.x - q.x, p.y - q.y) <= mergeDistance;
+  };
+  std::vector<std::vector<cet::VertexId>> loops;
+  std::vector<std::vector<std::size_t>> loopOccurrences;
+  bool gapBridged = false;
+  for (std::size_t l = 0; l < topology_.loops.size(); ++l) {
+    const auto& loop = topology_.loops[l];
+    std::vector<cet::VertexId> ids;
+    std::vector<std::size_t> occs;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const OccPoints& op = occPoints[l][i];
+      const std::size_t n = op.uv.size();
+      if (n == 0) continue;
+      Occurrence occ;
+      occ.loop = l, occ.index = i, occ.forward = !loop[i].reversed;
+      occ.chain.assign(n, cet::kNoVertex);
+      for (std::size_t s = 0; s < n; ++s) {
+        const std::size_t j = occ.forward ? s : n - 1 - s;
+        const bool firstOfOcc = s == 0, lastOfLoop = i + 1 == loop.size() && s + 1 == n;
+        if (firstOfOcc && !ids.empty()) {
+          if (close(ids.back(), op.uv[j])) {
+            occ.chain[j] = ids.back();
+            continue;
+          }
+          if (!gapBridged) repairs_.push_back("bridged a UV gap between consecutive pcurves");
+          gapBridged = repaired_ = true;
+        }
+        if (lastOfLoop && !ids.empty() && ids.size() > 1 && close(ids.front(), op.uv[j])) {
+          occ.chain[j] = ids.front();
+          continue;
+        }
+        occ.chain[j] = newPoint(op.uv[j], op.p[j]);
+        ids.push_back(occ.chain[j]);
+      }
+      occs.push_back(occurrences_.size());
+      occurrences_.push_back(std::move(occ));
+    }
+    loops.push_back(std::move(ids));
+    loopOccurrences.push_back(std::move(occs));
+  }
+
+  // Orientation: the loop of largest area is the outer one and must run counter-clockwise, the
+  // others clockwise (cet::DomainRule::kLoopOrientation). Wrongly oriented wires are reversed;
+  // loops without area bound nothing and are dropped.
+  std::vector<double> areas(loops.size());
+  std::size_t outer = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    areas[l] = loops[l].size() >= 3 ? signedArea(points_, loops[l]) : 0.0;
+    if (std::abs(areas[l]) > std::abs(areas[outer])) outer = l;
+  }
+  if (loops.empty() || !(std::abs(areas[outer]) > 0)) {
+    problem = "the boundary encloses no area in UV";
+    return false;
+  }
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    if (std::abs(areas[l]) <= 1e-12 * std::abs(areas[outer])) {
+      repairs_.push_back("dropped a wire that encloses no area");
+      repaired_ = true;
+      loops[l].clear();
+      continue;
+    }
+    const bool wantPositive = l == outer;
+    if ((areas[l] > 0) != wantPositive) {
+      std::reverse(loops[l].begin(), loops[l].end());
+      for (std::size_t o : loopOccurrences[l]) occurrences_[o].forward = !occurrences_[o].forward;
+      repairs_.push_back(wantPositive ? "outer wire ran clockwise in UV; reversed" : "inner wire ran counter-clockwise in UV; reversed");
+      repaired_ = true;
+    }
+  }
+  // Occurrences of dropped loops take no part in boundary refinement.
+  occurrences_.erase(std::remove_if(occurrences_.begin(), occurrences_.end(),
+                                    [&](const Occurrence& o) { return loops[o.loop].empty(); }),
+                     occurrences_.end());
+
+  cdt_->reserve(points_.size() * 4);
+  cdt_->addVertices(points_.data(), points_.size());
+  if (!cdt_->insertPending()) {
+    problem = "all boundary points are collinear in UV";
+    return false;
+  }
+  for (const auto& loop : loops) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const cet::VertexId a = cdt_->representative(loop[i]), b = cdt_->representative(loop[(i + 1) % loop.size()]);
+      if (a == b) continue;
+      const cet::Status s = cdt_->insertSegment(a, b);
+      if (!s.ok()) {
+        problem = "boundary crosses itself in UV (" + s.message + ")";
+        return false;
+      }
+    }
+  }
+  cdt_->markDomain(cet::DomainRule::kLoopOrientation);
+  if (cdt_->insideTriangleCount() == 0) {
+    problem = "no triangle inside the boundary";
+    return false;
+  }
+  boundaryLevel_ = k;
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Later levels: every boundary segment that its edge split at level k becomes the chain through the
+// new points. Degenerate edges keep their level-0 points (they are one 3D point).
+bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem) {
+  std::vector<cet::Point2> pts;
+  std::vector<gp_Pnt2d> uvs;
+  std::vector<const gp_Pnt*> ps;
+  std::vector<cet::VertexId> ids;
+  for (Occurrence& occ : occurrences_) {
+    const LoopEdge& le = topology_.loops[occ.loop][occ.index];
+    if (le.degenerated) continue;
+    const EdgePoints& now = edges.points(le.edge, k);
+    const EdgePoints& before = edges.points(le.edge, boundaryLevel_);
+    if (now.t.size() == before.t.size()) continue;
+    if (before.t.size() != occ.chain.size()) {
+      problem = "internal: boundary chain out of step with its edge";
+      return false;
+    }
+    std::vector<cet::VertexId> chain;
+    chain.reserve(now.t.size());
+    std::size_t j = 0;
+    for (std::size_t o = 0; o + 1 < before.t.size(); ++o) {
+      chain.push_back(occ.chain[o]);
+      while (j < now.t.size() && now.t[j] <= before.t[o]) ++j;
+      pts.clear(), uvs.clear(), ps.clear();
+      for (; j < now.t.size() && now.t[j] < before.t[o + 1]; ++j) {
+        uvs.push_back(le.pcurve->Value(le.pcurveParameter(now.t[j])).Translated(le.shift));
+        pts.push_back(scaled(uvs.back().X(), uvs.back().Y()));
+        ps.push_back(&now.p[j]);
+      }
+      if (pts.empty()) continue;
+      if (!occ.forward) {
+        std::reverse(pts.begin(), pts.end());
+        std::reverse(uvs.begin(), uvs.end());
+        std::reverse(ps.begin(), ps.end());
+      }
+      ids.assign(pts.size(), cet::kNoVertex);
+      const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
+      const cet::VertexId a = occ.forward ? occ.chain[o] : occ.chain[o + 1];
+      const cet::VertexId b = occ.forward ? occ.chain[o + 1] : occ.chain[o];
+      const cet::Status s = cdt_->replaceConstraint(a, b, pts.data(), pts.size(), ids.data());
+      // New triangulator vertices get their output data in id order (the order of the points).
+      cet::VertexId next = countBefore;
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (ids[i] == next) {
+          appendVertex(mesh, uvs[i].X(), uvs[i].Y(), ps[i]);
+          ++next;
+        }
+      }
+      while (next < cdt_->vertexCount()) {  // defensive: any vertex not matched above
+        const cet::Point2 q = cdt_->point(next);
+        appendVertex(mesh, eval_.u0 + q.x / eval_.su, eval_.v0 + q.y / eval_.sv, nullptr);
+        ++next;
+      }
+      if (!s.ok()) {
+        problem = "refined boundary crosses itself in UV (" + s.message + ")";
+        return false;
+      }
+      if (!occ.forward) std::reverse(ids.begin(), ids.end());
+      chain.insert(chain.end(), ids.begin(), ids.end());
+    }
+    chain.push_back(occ.chain.back());
+    occ.chain = std::move(chain);
+  }
+  cdt_->markDomain(cet::DomainRule::kLoopOrientation);
+  boundaryLevel_ = k;
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  cet::VertexId v[3];
+  gp_Pnt P[3];
+  double U[3], V[3];
+  for (int i = 0; i < 3; ++i) {
+    v[i] = m.vertex(t, i);
+    const std::size_t o = base_ + v[i];
+    P[i] = gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+    U[i] = mesh.uv[2 * o], V[i] = mesh.uv[2 * o + 1];
+  }
+  r = TriangleRecord{};
+  r.a = v[0], r.b = v[1], r.c = v[2];
+  if (P[0].IsEqual(P[1], 0) || P[1].IsEqual(P[2], 0) || P[0].IsEqual(P[2], 0)) {
+    r.flags = TriangleRecord::kCollapsed;
+    return;
+  }
+  double longest = 0;
+  for (int i = 0; i < 3; ++i) longest = std::max(longest, P[i].Distance(P[(i + 1) % 3]));
+  r.longest = static_cast<float>(longest);
+
+  // Chordal: project samples of the flat triangle onto the surface.
+  double worst = -1;
+  auto sample = [&](double b0, double b1, double b2, std::uint8_t id) {
+    double u = b0 * U[0] + b1 * U[1] + b2 * U[2], w = b0 * V[0] + b1 * V[1] + b2 * V[2];
+    const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
+    const double d = eval_.project(M, u, w, 3);
+    if (d > worst) worst = d, r.worstSample = id;
+  };
+  sample(1.0 / 3, 1.0 / 3, 1.0 / 3, 0);
+  // Edge i runs between corners i+1 and i+2; a constrained edge is a boundary chord, already
+  // within tolerance by the edge discretisation.
+  for (int i = 0; i < 3; ++i) {
+    if (m.isConstrained(t, i)) continue;
+    double b[3] = {0.5, 0.5, 0.5};
+    b[i] = 0;
+    sample(b[0], b[1], b[2], static_cast<std::uint8_t>(1 + i));
+  }
+  r.deviation = static_cast<float>(std::max(worst, 0.0));
+
+  // Regularity: corner normals. Poles and apexes have no meaningful normal to compare, and the two
+  // ends of a boundary segment are fixed by the edge discretisation: no interior point changes them.
+  double maxAngle = 0;
+  for (int i = 0; i < 3; ++i) {
+    const cet::VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
+    if (singular_[a] || singular_[b] || m.isConstrained(t, i)) continue;
+    const double angle = normal_[a].Angle(normal_[b]);
+    if (angle > maxAngle) maxAngle = angle, r.angleEdge = static_cast<std::uint8_t>(i);
+  }
+  r.normalAngle = static_cast<float>(maxAngle);
+
+  // Orientation against the surface.
+  const gp_Vec n = gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
+  gp_Vec ref(0, 0, 0);
+  for (int i = 0; i < 3; ++i)
+    if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
+  if (n.Magnitude() <= 1e-30 * longest * longest || (ref.Magnitude() > 0 && n.Dot(ref) <= 0))
+    r.flags |= TriangleRecord::kFlipped;
+}
+
+bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
+  const double chordal = kDeviationMargin * level.chordal;
+  const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
+  std::vector<gp_Pnt2d> uvs;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+    const cet::CetMesh& m = cdt_->mesh();
+    points_.clear();
+    uvs.clear();
+    const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
+    for (cet::TriangleId t = 0; t < triangles; ++t) {
+      if (m.isGhost(t) || m.isOutside(t)) continue;
+      const TriangleRecord* r = cache_.find(m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2));
+      TriangleRecord fresh;
+      if (!r) {
+        evaluateTriangle(t, mesh, fresh);
+        cache_.insert(fresh);
+        r = &fresh;
+      }
+      if (r->flags & TriangleRecord::kCollapsed) continue;
+      // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
+      int at = -1;
+      if (r->deviation > chordal && r->longest > 1e-3 * level.chordal) {
+        at = r->worstSample;
+      } else if (r->normalAngle > level.angleRad * (1 + 1e-6) && r->longest > minSize) {
+        at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
+      } else if ((r->flags & TriangleRecord::kFlipped) && r->longest > minSize) {
+        at = 0;
+      }
+      if (at < 0) continue;
+      if (getenv("DBG_REFINE")) fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d\n", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
+      double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+      if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
+      double u = 0, v = 0;
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t o = base_ + m.vertex(t, i);
+        u += b[i] * mesh.uv[2 * o], v += b[i] * mesh.uv[2 * o + 1];
+      }
+      uvs.emplace_back(u, v);
+      points_.push_back(scaled(u, v));
+    }
+    if (points_.empty()) return true;
+    const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
+    ids_.assign(points_.size(), cet::kNoVertex);
+    outcomes_.assign(points_.size(), cet::InsertOutcome::kOutside);
+    cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data());
+    const auto countAfter = static_cast<cet::VertexId>(cdt_->vertexCount());
+    if (countAfter == countBefore) return true;  // every request merged or rejected: nothing left to gain
+    std::vector<std::uint32_t> inputOf(countAfter - countBefore, UINT32_MAX);
+    for (std::size_t i = 0; i < ids_.size(); ++i)
+      if (outcomes_[i] == cet::InsertOutcome::kInserted && ids_[i] >= countBefore) inputOf[ids_[i] - countBefore] = static_cast<std::uint32_t>(i);
+    for (cet::VertexId id = countBefore; id < countAfter; ++id) {
+      const std::uint32_t i = inputOf[id - countBefore];
+      if (i != UINT32_MAX) {
+        appendVertex(mesh, uvs[i].X(), uvs[i].Y(), nullptr);
+      } else {
+        const cet::Point2 q = cdt_->point(id);
+        appendVertex(mesh, eval_.u0 + q.x / eval_.su, eval_.v0 + q.y / eval_.sv, nullptr);
+      }
+    }
+  }
+  return true;
+}
+
+std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  std::vector<std::uint32_t> indices;
+  indices.reserve(cdt_->insideTriangleCount() * 3);
+  const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
+  auto same = [&](std::uint32_t a, std::uint32_t b) {
+    return mesh.positions[3 * a] == mesh.positions[3 * b] && mesh.positions[3 * a + 1] == mesh.positions[3 * b + 1] &&
+           mesh.positions[3 * a + 2] == mesh.positions[3 * b + 2];
+  };
+  for (cet::TriangleId t = 0; t < triangles; ++t) {
+    if (m.isGhost(t) || m.isOutside(t)) continue;
+    const std::uint32_t a = base_ + m.vertex(t, 0), b = base_ + m.vertex(t, 1), c = base_ + m.vertex(t, 2);
+    if (same(a, b) || same(b, c) || same(a, c)) continue;  // collapsed on a pole or a closed UV gap
+    if (settings_.reversed) {
+      indices.insert(indices.end(), {a, c, b});
+    } else {
+      indices.insert(indices.end(), {a, b, c});
+    }
+  }
+  return indices;
+}
+
+FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report) {
+  cdt_.reset();
+  cache_.clear();
+  fallback_ = true;
+  std::vector<std::uint32_t> indices;
+  std::string failure;
+  const bool ok = meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal,
+                                       settings_.finalAngle, mesh, indices, failure);
+  fallbackStatus_ = ok ? FaceStatus::kFallback : FaceStatus::kEmpty;
+  report.status = fallbackStatus_;
+  report.reason = ok ? why : why + "; fallback failed too: " + failure;
+  mesh.levels.push_back(std::move(indices));
+  mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
+  return fallbackStatus_;
+}
+
+FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
+                               const std::atomic<bool>* cancel) {
+  if (cancel && cancel->load(std::memory_order_relaxed)) return FaceStatus::kCancelled;
+  if (fallback_) {
+    // The fallback mesh is at the final tolerance: within every level's.
+    mesh.levels.push_back(mesh.levels.back());
+    mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
+    report.status = fallbackStatus_;
+    return fallbackStatus_;
+  }
+  if (!topology_.failure.empty()) return useFallback(topology_.failure, mesh, report);
+  std::string problem;
+  try {
+    bool ok = true;
+    if (!cdt_) {
+      ok = buildDomain(k, edges, mesh, problem);
+    } else if (boundaryLevel_ < k) {
+      ok = refineBoundary(k, edges, mesh, problem);
+      if (!ok) {
+        repairs_.push_back("rebuilt at level " + std::to_string(k) + ": " + problem);
+        repaired_ = true;
+        problem.clear();
+        ok = buildDomain(k, edges, mesh, problem);
+      }
+    }
+    if (!ok) return useFallback(problem, mesh, report);
+    if (!refine(level, mesh, cancel)) return FaceStatus::kCancelled;
+  } catch (const Standard_Failure& e) {
+    return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report);
+  }
+  std::vector<std::uint32_t> indices = snapshot(mesh);
+  if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report);
+  mesh.levels.push_back(std::move(indices));
+  mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
+  report.status = repaired_ ? FaceStatus::kRepaired : FaceStatus::kOk;
+  report.reason.clear();
+  for (const std::string& r : repairs_) report.reason += (report.reason.empty() ? "" : "; ") + r;
+  return report.status;
+}
+
+}  // namespace cetview::brep

@@ -1,0 +1,89 @@
+// One face, coarse to fine, on its own CET triangulator (DESIGN.md "Data flow", steps 3-6).
+//
+// Level 0 builds the face domain: the loops of face_topology.h sampled at the shared edge points,
+// scaled UV, segments recovered, outside flood-filled. Each later level replaces every boundary
+// segment that its edge split by the chain of new points (Triangulator::replaceConstraint), then
+// refines the interior until every triangle is within the level's tolerances. Vertices are appended
+// to the FaceMesh as the triangulator creates them (output id = triangulator id + a base that only a
+// rebuild moves), so nothing is ever rebuilt per level.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "brep/tessellator.h"
+#include "cet/triangulator.h"
+#include "face_topology.h"
+#include "surface_eval.h"
+#include "triangle_cache.h"
+
+namespace cetview::brep {
+
+class EdgeTable;
+
+// Refinement (of edges and of triangles) aims below each tolerance by this factor: the samples see
+// most, not all, of a segment's or triangle's deviation (a quadratic deviation peaks within ~15% of
+// its largest sampled value).
+constexpr double kDeviationMargin = 0.85;
+
+struct FaceMesherSettings {
+  double finalChordal = 0;   // the fallback mesher's tolerance; UV gaps below a tenth of it close silently
+  double finalAngle = 0;
+  bool reversed = false;     // face orientation: normals and winding of the output flip
+};
+
+class FaceMesher {
+ public:
+  FaceMesher(FaceTopology topology, const FaceMesherSettings& settings);
+
+  // Advances to level k (the previous level is k-1, or none). Appends the new vertices to `mesh` and
+  // pushes level k's index array. Returns kCancelled (nothing pushed) when cancel is raised.
+  FaceStatus advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
+                     const std::atomic<bool>* cancel);
+
+ private:
+  struct Occurrence {
+    std::size_t loop = 0, index = 0;  // position in topology_.loops
+    // Triangulator ids of its points in increasing edge parameter (degenerate: pcurve order).
+    std::vector<cet::VertexId> chain;
+    bool forward = true;  // the loop runs along increasing parameter
+  };
+
+  bool buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
+  bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
+  // Interior refinement to the level's tolerances; false when cancelled.
+  bool refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
+  // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
+  std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
+  FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report);
+
+  // Output bookkeeping: vertices the triangulator created since the last sync get their data.
+  // Appends the output data of the next triangulator vertex: at (u, v), position p (an edge point)
+  // or, when p is null, the surface point.
+  void appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p);
+  cet::Point2 scaled(double u, double v) const { return {(u - eval_.u0) * eval_.su, (v - eval_.v0) * eval_.sv}; }
+  void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const;
+
+  FaceTopology topology_;
+  FaceMesherSettings settings_;
+  SurfaceEval eval_;
+  std::unique_ptr<cet::Triangulator> cdt_;
+  std::uint32_t base_ = 0;  // output id of triangulator vertex 0
+  std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
+  std::vector<std::uint8_t> singular_;  // normal not defined by first derivatives (pole, apex)
+  std::vector<Occurrence> occurrences_;
+  TriangleCache cache_;
+  bool repaired_ = false;
+  std::vector<std::string> repairs_;
+  bool fallback_ = false;
+  FaceStatus fallbackStatus_ = FaceStatus::kFallback;
+  int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
+  // Scratch.
+  std::vector<cet::Point2> points_;
+  std::vector<cet::VertexId> ids_;
+  std::vector<cet::InsertOutcome> outcomes_;
+};
+
+}  // namespace cetview::brep

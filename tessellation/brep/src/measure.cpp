@@ -1,0 +1,73 @@
+#include "brep/measure.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Standard_Failure.hxx>
+#include <TopoDS.hxx>
+
+#include "brep/tessellator.h"
+#include "measure_impl.h"
+#include "model_impl.h"
+#include "parallel.h"
+
+namespace cetview::brep {
+
+double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
+                        std::size_t triangles) {
+  // The centroid and the barycentric grid of step 1/4 without the corners.
+  static const double kSamples[13][3] = {
+      {1.0 / 3, 1.0 / 3, 1.0 / 3}, {.75, .25, 0}, {.5, .5, 0}, {.25, .75, 0}, {0, .75, .25}, {0, .5, .5}, {0, .25, .75},
+      {.25, 0, .75}, {.5, 0, .5}, {.75, 0, .25}, {.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}};
+  double worst = 0;
+  for (std::size_t t = 0; t < triangles; ++t) {
+    const std::uint32_t v[3] = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
+    for (const auto& b : kSamples) {
+      gp_XYZ m(0, 0, 0);
+      double u = 0, w = 0;
+      for (int i = 0; i < 3; ++i) {
+        m += b[i] * gp_XYZ(positions[3 * v[i]], positions[3 * v[i] + 1], positions[3 * v[i] + 2]);
+        u += b[i] * uv[2 * v[i]], w += b[i] * uv[2 * v[i] + 1];
+      }
+      worst = std::max(worst, eval.project(gp_Pnt(m), u, w, 8));
+    }
+  }
+  return worst;
+}
+
+std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned threads) {
+  const ModelImpl& model = t.model().impl();
+  std::vector<FaceQuality> out(model.faces.size());
+  parallelFor(out.size(), threads, [&](std::size_t f, unsigned) {
+    const FaceMesh& m = t.faceMesh(static_cast<FaceId>(f));
+    FaceQuality& q = out[f];
+    if (m.levels.empty()) return;
+    const std::size_t k = level < 0 ? m.levels.size() - 1 : std::min<std::size_t>(static_cast<std::size_t>(level), m.levels.size() - 1);
+    const std::vector<std::uint32_t>& idx = m.levels[k];
+    q.triangles = idx.size() / 3;
+    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
+      gp_XYZ p[3], n(0, 0, 0);
+      for (int c = 0; c < 3; ++c) {
+        const std::uint32_t v = idx[i + static_cast<std::size_t>(c)];
+        p[c] = gp_XYZ(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+        n += gp_XYZ(m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2]);
+      }
+      const gp_XYZ cr = (p[1] - p[0]).Crossed(p[2] - p[0]);
+      const double longest = std::max({(p[1] - p[0]).Modulus(), (p[2] - p[1]).Modulus(), (p[0] - p[2]).Modulus()});
+      if (cr.Modulus() <= 1e-12 * longest * longest) {
+        ++q.degenerate;
+      } else if (cr.Dot(n) <= 0) {
+        ++q.flipped;
+      }
+    }
+    try {
+      SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
+      q.maxDeviation = measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data(), q.triangles);
+    } catch (const Standard_Failure&) {
+      q.maxDeviation = INFINITY;
+    }
+  });
+  return out;
+}
+
+}  // namespace cetview::brep

@@ -1,0 +1,134 @@
+// The Tessellator: levels, shared edges, per-face advance, and the all-in-one run().
+#include "brep/tessellator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model_impl.h"
+#include "parallel.h"
+#include "tessellator_impl.h"
+
+namespace cetview::brep {
+
+const char* faceStatusName(FaceStatus status) {
+  switch (status) {
+    case FaceStatus::kPending: return "pending";
+    case FaceStatus::kOk: return "ok";
+    case FaceStatus::kRepaired: return "repaired";
+    case FaceStatus::kFallback: return "fallback";
+    case FaceStatus::kEmpty: return "empty";
+    case FaceStatus::kCancelled: return "cancelled";
+  }
+  return "unknown";
+}
+
+std::vector<Level> planLevels(double chordal, double angle, double diagonal, bool progressive) {
+  std::vector<Level> levels;
+  const double coarse = 0.01 * diagonal;
+  int count = 1;
+  double factor = 2.0;
+  if (progressive && coarse > chordal) {
+    count = static_cast<int>(std::ceil(std::log2(coarse / chordal))) + 1;
+    if (count > 8) {
+      count = 8;
+      factor = std::pow(coarse / chordal, 1.0 / 7.0);
+    }
+  }
+  const double maxAngle = std::max(angle, M_PI / 3);
+  for (int k = 0; k < count; ++k) {
+    const double ratio = std::pow(factor, count - 1 - k);
+    levels.push_back({chordal * ratio, std::min(angle * std::sqrt(ratio), maxAngle)});
+  }
+  return levels;
+}
+
+TessellatorImpl::TessellatorImpl(const Model& m, double c, double a, std::vector<Level> s)
+    : model(m), chordal(c), angle(a), schedule(std::move(s)), edges(m.impl(), schedule.size()), faces(m.faces().size()) {}
+
+Tessellator::Tessellator(std::unique_ptr<TessellatorImpl> impl) : impl_(std::move(impl)) {}
+Tessellator::~Tessellator() = default;
+
+Tessellator::CreateResult Tessellator::create(const Model& model, const MeshParams& params) {
+  CreateResult result;
+  double chordal = 0;
+  result.error = resolveDeflection(params.chordal, model.bounds().diagonal(), chordal);
+  if (!result.error.empty()) return result;
+  if (!(params.angleDeg > 0) || params.angleDeg > 90) {
+    result.error = "angle must be in (0, 90] degrees";
+    return result;
+  }
+  const double angle = params.angleDeg * M_PI / 180.0;
+  auto impl = std::make_unique<TessellatorImpl>(model, chordal, angle,
+                                                planLevels(chordal, angle, model.bounds().diagonal(), params.progressive));
+  result.tessellator.reset(new Tessellator(std::move(impl)));
+  return result;
+}
+
+const Model& Tessellator::model() const { return impl_->model; }
+double Tessellator::chordal() const { return impl_->chordal; }
+double Tessellator::angleRad() const { return impl_->angle; }
+const std::vector<Level>& Tessellator::schedule() const { return impl_->schedule; }
+int Tessellator::edgeLevel() const { return impl_->edgeLevel.load(); }
+int Tessellator::faceLevel(FaceId face) const { return impl_->faces[face].level; }
+const FaceMesh& Tessellator::faceMesh(FaceId face) const { return impl_->faces[face].mesh; }
+FaceReport Tessellator::report(FaceId face) const { return impl_->faces[face].report; }
+
+bool Tessellator::discretiseEdges(int level, unsigned threads, const std::atomic<bool>* cancel) {
+  if (level != impl_->edgeLevel.load() + 1 || level > lastLevel()) return level <= impl_->edgeLevel.load();
+  // Edges aim below the level's tolerance by the same margin as the faces' triangles.
+  Level edgeTolerance = impl_->schedule[static_cast<std::size_t>(level)];
+  edgeTolerance.chordal *= kDeviationMargin;
+  if (!impl_->edges.discretise(level, edgeTolerance, threads, cancel)) return false;
+  impl_->edgeLevel.store(level);
+  return true;
+}
+
+FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bool>* cancel) {
+  TessellatorImpl& t = *impl_;
+  TessellatorImpl::FaceState& s = t.faces[face];
+  level = std::min(level, lastLevel());
+  if (level > t.edgeLevel.load()) return s.report.status;  // contract: edges first
+  for (int k = s.level + 1; k <= level; ++k) {
+    if (!s.mesher) {
+      FaceMesherSettings settings;
+      settings.finalChordal = t.chordal;
+      settings.finalAngle = t.angle;
+      settings.reversed = t.model.faces()[face].reversed;
+      s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings);
+    }
+    const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh, s.report, cancel);
+    if (status == FaceStatus::kCancelled) return status;
+    s.level = k;
+  }
+  if (s.level == lastLevel()) s.mesher.reset();
+  return s.report.status;
+}
+
+bool Tessellator::run(unsigned threads, const ProgressFn& progress, const std::atomic<bool>* cancel, int lastLevelWanted) {
+  const int last = lastLevelWanted < 0 ? lastLevel() : std::min(lastLevelWanted, lastLevel());
+  for (int k = edgeLevel() + 1; k <= last; ++k)
+    if (!discretiseEdges(k, threads, cancel)) return false;
+  const std::size_t total = impl_->faces.size();
+  std::atomic<std::size_t> done{0};
+  std::atomic<bool> cancelled{false};
+  // Faces are independent once the edges are there: each runs through all its levels at once.
+  parallelFor(total, threads, [&](std::size_t f, unsigned worker) {
+    if (advanceFace(static_cast<FaceId>(f), last, cancel) == FaceStatus::kCancelled) cancelled = true;
+    const std::size_t d = ++done;
+    if (worker == 0 && progress) progress(d, total);
+  });
+  if (progress && !cancelled) progress(total, total);
+  return !cancelled && !(cancel && cancel->load());
+}
+
+std::size_t Tessellator::triangleCount(int level) const {
+  std::size_t n = 0;
+  for (const auto& s : impl_->faces) {
+    if (s.mesh.levels.empty()) continue;
+    const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(level), s.mesh.levels.size() - 1);
+    n += s.mesh.levels[k].size() / 3;
+  }
+  return n;
+}
+
+}  // namespace cetview::brep

@@ -1,0 +1,39 @@
+// Private: the state behind a Tessellator (shared edges, per-face meshers and meshes).
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <vector>
+
+#include "brep/tessellator.h"
+#include "edge_table.h"
+#include "face_mesher.h"
+
+namespace cetview::brep {
+
+class TessellatorImpl {
+ public:
+  TessellatorImpl(const Model& model, double chordal, double angle, std::vector<Level> schedule);
+
+  struct FaceState {
+    std::unique_ptr<FaceMesher> mesher;  // alive between levels, freed after the last one
+    FaceMesh mesh;
+    FaceReport report;
+    int level = -1;
+  };
+
+  const Model& model;
+  double chordal;
+  double angle;
+  std::vector<Level> schedule;
+  EdgeTable edges;
+  std::atomic<int> edgeLevel{-1};
+  std::vector<FaceState> faces;
+};
+
+// Plans the levels: tolerances halving from about 1% of the diagonal down to `chordal` (faster than
+// halving when that would take more than 8 levels), angles coarsening with the square root of the
+// tolerance ratio (a circle's sagitta grows with the square of its angle).
+std::vector<Level> planLevels(double chordal, double angle, double diagonal, bool progressive);
+
+}  // namespace cetview::brep
