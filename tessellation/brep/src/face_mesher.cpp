@@ -26,6 +26,7 @@ namespace {
 // Passes of batch insertion per level; each pass at least halves the offending triangles' size, so
 // this bounds a level's refinement depth, not its work.
 constexpr int kMaxPasses = 60;
+const bool kDebugRefine = std::getenv("CETVIEW_DEBUG_REFINE") != nullptr;  // traces split decisions
 
 double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::VertexId>& loop) {
   double a = 0;
@@ -311,21 +312,24 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   }
   r = TriangleRecord{};
   r.a = v[0], r.b = v[1], r.c = v[2];
-  if (P[0].IsEqual(P[1], 0) || P[1].IsEqual(P[2], 0) || P[0].IsEqual(P[2], 0)) {
-    r.flags = TriangleRecord::kCollapsed;
-    return;
-  }
+  const bool collapsed = P[0].IsEqual(P[1], 0) || P[1].IsEqual(P[2], 0) || P[0].IsEqual(P[2], 0);
   double longest = 0;
   for (int i = 0; i < 3; ++i) longest = std::max(longest, P[i].Distance(P[(i + 1) % 3]));
   r.longest = static_cast<float>(longest);
 
-  // Chordal: project samples of the flat triangle onto the surface.
-  double worst = -1;
+  // Chordal: samples of the flat triangle projected onto the surface. The corresponding-point
+  // distance |S(uv) - M| at the same samples guards the other direction: a triangle whose UV region
+  // maps far from it (spanning a seam, or collapsed on a pole with a whole sector behind it) does not
+  // cover its part of the surface, however close its own points are.
+  double worst = -1, worstCorresponding = -1;
+  std::uint8_t worstCorrespondingSample = 0;
   auto sample = [&](double b0, double b1, double b2, std::uint8_t id) {
     double u = b0 * U[0] + b1 * U[1] + b2 * U[2], w = b0 * V[0] + b1 * V[1] + b2 * V[2];
     const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
-    const double d = eval_.project(M, u, w, 3);
+    double corresponding = 0;
+    const double d = eval_.project(M, u, w, collapsed ? 0 : 3, &corresponding);
     if (d > worst) worst = d, r.worstSample = id;
+    if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
   };
   sample(1.0 / 3, 1.0 / 3, 1.0 / 3, 0);
   // Edge i runs between corners i+1 and i+2; a constrained edge is a boundary chord, already
@@ -336,7 +340,15 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     b[i] = 0;
     sample(b[0], b[1], b[2], static_cast<std::uint8_t>(1 + i));
   }
+  if (collapsed || worstCorresponding > longest) {
+    worst = worstCorresponding;
+    r.worstSample = worstCorrespondingSample;
+  }
   r.deviation = static_cast<float>(std::max(worst, 0.0));
+  if (collapsed) {
+    r.flags = TriangleRecord::kCollapsed;
+    return;
+  }
 
   // Regularity: corner normals. Poles and apexes have no meaningful normal to compare, and the two
   // ends of a boundary segment are fixed by the edge discretisation: no interior point changes them.
@@ -358,6 +370,65 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     r.flags |= TriangleRecord::kFlipped;
 }
 
+bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, double angleRad, const FaceMesh& mesh) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  // Required clearance, as a fraction of the chord: above the sagitta ratio (turn angle / 8) of any
+  // chord the edge discretisation of this level accepts.
+  const double clearance = std::min(0.2, std::max(0.05, angleRad / 5));
+  auto pos = [&](cet::VertexId id) {
+    const std::size_t o = base_ + id;
+    return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+  };
+  // The chord of edge i of triangle s, inside on its left (counter-clockwise triangles).
+  auto clear = [&](cet::TriangleId s, int i, const gp_Pnt& x) {
+    const cet::VertexId a = m.vertex(s, (i + 1) % 3), b = m.vertex(s, (i + 2) % 3);
+    const gp_Pnt A = pos(a), B = pos(b);
+    const gp_Vec ab(A, B);
+    const double len2 = ab.SquareMagnitude();
+    if (len2 == 0) return true;
+    gp_Vec n(0, 0, 0);
+    if (!singular_[a]) n += gp_Vec(normal_[a]);
+    if (!singular_[b]) n += gp_Vec(normal_[b]);
+    if (n.Magnitude() == 0) return true;
+    n.Normalize();
+    return ab.Crossed(gp_Vec(A, x)).Dot(n) >= clearance * len2;
+  };
+  struct Chord { cet::TriangleId s; int i; };
+  Chord chords[12];
+  int count = 0;
+  int own = -1;  // a constrained edge of t itself
+  for (int i = 0; i < 3; ++i) {
+    if (m.isConstrained(t, i)) {
+      chords[count++] = {t, i};
+      own = i;
+    }
+    const cet::TriangleId n = m.neighbor(t, i);
+    if (n == cet::kNoTriangle || m.isGhost(n) || m.isOutside(n)) continue;
+    for (int j = 0; j < 3; ++j)
+      if (m.isConstrained(n, j)) chords[count++] = {n, j};
+  }
+  if (count == 0) return true;
+  auto ok = [&](double uu, double vv) {
+    const gp_Pnt x = eval_.point(uu, vv);
+    for (int c = 0; c < count; ++c)
+      if (!clear(chords[c].s, chords[c].i, x)) return false;
+    return true;
+  };
+  if (ok(u, v)) return true;
+  if (own < 0) return false;
+  // Slide from the chord's midpoint towards the opposite corner.
+  const std::size_t oa = base_ + m.vertex(t, (own + 1) % 3), ob = base_ + m.vertex(t, (own + 2) % 3), oc = base_ + m.vertex(t, own);
+  const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
+  for (double f : {0.5, 0.7}) {
+    const double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
+    if (ok(uu, vv)) {
+      u = uu, v = vv;
+      return true;
+    }
+  }
+  return false;
+}
+
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
@@ -377,24 +448,33 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         cache_.insert(fresh);
         r = &fresh;
       }
-      if (r->flags & TriangleRecord::kCollapsed) continue;
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1;
-      if (r->deviation > chordal && r->longest > 1e-3 * level.chordal) {
+      if (r->deviation > chordal && (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed))) {
         at = r->worstSample;
+      } else if (r->flags & TriangleRecord::kCollapsed) {
+        at = -1;
       } else if (r->normalAngle > level.angleRad * (1 + 1e-6) && r->longest > minSize) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
       } else if ((r->flags & TriangleRecord::kFlipped) && r->longest > minSize) {
         at = 0;
       }
       if (at < 0) continue;
-      if (getenv("DBG_REFINE")) fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d\n", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
+      if (kDebugRefine) { fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
+        for (int i = 0; i < 3; ++i) { auto o = base_ + m.vertex(t, i); fprintf(stderr, " [%u %.5f %.5f n %.3f %.3f %.3f s%d]", m.vertex(t,i), mesh.uv[2*o], mesh.uv[2*o+1], normal_[m.vertex(t,i)].X(), normal_[m.vertex(t,i)].Y(), normal_[m.vertex(t,i)].Z(), singular_[m.vertex(t,i)]); }
+        fprintf(stderr, "\n"); }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
       double u = 0, v = 0;
       for (int i = 0; i < 3; ++i) {
         const std::size_t o = base_ + m.vertex(t, i);
         u += b[i] * mesh.uv[2 * o], v += b[i] * mesh.uv[2 * o + 1];
+      }
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, level.angleRad, mesh)) {
+        TriangleRecord stuck = *r;
+        stuck.flags |= TriangleRecord::kStuck;
+        cache_.insert(stuck);
+        continue;
       }
       uvs.emplace_back(u, v);
       points_.push_back(scaled(u, v));

@@ -65,6 +65,11 @@ class FaceMesher {
   void appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p);
   cet::Point2 scaled(double u, double v) const { return {(u - eval_.u0) * eval_.su, (v - eval_.v0) * eval_.sv}; }
   void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const;
+  // Keeps a split point of triangle t off the boundary chords near it: a point closer to a chord than
+  // a fraction of its length can land on the wrong side of it in 3D (a chord cuts into the surface by
+  // its in-surface sagitta) and make a flipped triangle nothing can repair. Moves (u, v) towards the
+  // opposite corner when needed; false when no safe point was found.
+  bool safeSplit(cet::TriangleId t, double& u, double& v, double angleRad, const FaceMesh& mesh) const;
 
   FaceTopology topology_;
   FaceMesherSettings settings_;

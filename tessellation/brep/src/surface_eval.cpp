@@ -20,23 +20,42 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
     uMin = std::max(su0_, -1e6), uMax = std::min(su1_, 1e6), vMin = std::max(sv0_, -1e6), vMax = std::min(sv1_, 1e6);
   }
   u0 = uMin, v0 = vMin;
-  // Mean |Su| and |Sv| on a 5x5 grid over the parameter box.
-  double lu = 0, lv = 0;
+  // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
+  double lu = 0, lv = 0, ku = 0, kv = 0;
   int n = 0;
   for (int i = 0; i < 5; ++i) {
     for (int j = 0; j < 5; ++j) {
       const double u = uMin + (uMax - uMin) * (i + 0.5) / 5, v = vMin + (vMax - vMin) * (j + 0.5) / 5;
       gp_Pnt p;
-      gp_Vec du, dv;
-      surface_.D1(u, v, p, du, dv);
-      lu += du.Magnitude(), lv += dv.Magnitude();
+      gp_Vec du, dv, duu, dvv, duv;
+      surface_.D2(u, v, p, du, dv, duu, dvv, duv);
+      const double mu = du.Magnitude(), mv = dv.Magnitude();
+      lu += mu, lv += mv;
+      const gp_Vec c = du.Crossed(dv);
+      if (c.Magnitude() > 1e-12 * mu * mv && mu > 0 && mv > 0) {
+        const gp_Vec nrm = c / c.Magnitude();
+        ku += std::abs(duu.Dot(nrm)) / (mu * mu);
+        kv += std::abs(dvv.Dot(nrm)) / (mv * mv);
+      }
       ++n;
     }
   }
-  lu /= n, lv /= n;
+  lu /= n, lv /= n, ku /= n, kv /= n;
+  meanLu_ = lu, meanLv_ = lv;
   const double floor = 1e-9 * std::max({lu, lv, 1e-300});
   su = std::max(lu, floor);
   sv = std::max(lv, floor);
+  // Curved faces: weigh each direction by the square root of its curvature, so the Delaunay
+  // criterion judges shapes by how fast the surface turns rather than by length (a chord's sagitta
+  // grows with curvature times length squared). A cylinder's triangles then run along its straight
+  // direction, as they should; the anisotropy is capped at 10:1 in length.
+  const double kmax = std::max(ku, kv);
+  const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
+  if (kmax * size > 1e-3) {
+    const double kfloor = 1e-2 * kmax;
+    su *= std::sqrt(std::max(ku, kfloor) / kmax);
+    sv *= std::sqrt(std::max(kv, kfloor) / kmax);
+  }
   if (!(su > 0) || !std::isfinite(su)) su = 1;
   if (!(sv > 0) || !std::isfinite(sv)) sv = 1;
 }
@@ -46,7 +65,10 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   surface_.D1(u, v, p, du, dv);
   const gp_Vec c = du.Crossed(dv);
   const double m = c.Magnitude();
-  if (m > 1e-12 * du.Magnitude() * dv.Magnitude() && m > 1e-300) {
+  // Regular where both derivatives are well away from zero against their typical lengths (at a pole
+  // one of them is rounding noise whose direction means nothing) and not parallel.
+  const double mu = du.Magnitude(), mv = dv.Magnitude();
+  if (mu > 1e-7 * meanLu_ && mv > 1e-7 * meanLv_ && m > 1e-10 * mu * mv) {
     n = gp_Dir(c);
     return true;
   }
@@ -70,7 +92,7 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   return false;
 }
 
-double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter) const {
+double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start) const {
   gp_Pnt s;
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
@@ -78,6 +100,7 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter) 
     surface_.D1(u, v, s, du, dv);
     const gp_Vec r(s, m);
     const double d = r.Magnitude();
+    if (it == 0 && start) *start = d;
     if (d < best) best = d, bu = u, bv = v;
     if (it == maxIter || d == 0) break;
     // Gauss-Newton: [Su.Su Su.Sv; Su.Sv Sv.Sv] (du dv) = (r.Su, r.Sv), lightly damped for poles.

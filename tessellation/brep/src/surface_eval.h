@@ -27,7 +27,8 @@ class SurfaceEval {
   // Distance from m to the surface, by Gauss-Newton from (u, v) (updated to the foot point). Each
   // iterate is a surface point, so the result never underestimates the distance to the nearest
   // point found. maxIter bounds the derivative evaluations.
-  double project(const gp_Pnt& m, double& u, double& v, int maxIter) const;
+  // `start` (if given) receives |S(u, v) - m| at the starting (u, v): the corresponding-point distance.
+  double project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start = nullptr) const;
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
@@ -40,6 +41,7 @@ class SurfaceEval {
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
+  double meanLu_ = 0, meanLv_ = 0;                 // mean |Su|, |Sv| over the face
 };
 
 }  // namespace cetview::brep

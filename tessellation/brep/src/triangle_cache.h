@@ -19,6 +19,7 @@ struct TriangleRecord {
   std::uint8_t flags = 0;        // kFlipped | kCollapsed
   static constexpr std::uint8_t kFlipped = 1;    // faces against the surface normals, or no area
   static constexpr std::uint8_t kCollapsed = 2;  // two corners share a 3D point (pole, gap): dropped
+  static constexpr std::uint8_t kStuck = 4;      // no safe split point (see FaceMesher::safeSplit)
 };
 
 class TriangleCache {
