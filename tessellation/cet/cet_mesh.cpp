@@ -127,10 +127,10 @@ void CetMesh::touchVertices(TriangleId t) {
   }
 }
 
-void CetMesh::flip(TriangleId t, int i) {
+void CetMesh::flip(TriangleId t, int i) { flip(t, i, twin(EdgeRef{t, i}).i); }
+
+void CetMesh::flip(TriangleId t, int i, int j) {
   const TriangleId u = triangles_[t].N[i];
-  const EdgeRef tw = twin(EdgeRef{t, i});
-  const int j = tw.i;
   const Triangle T = triangles_[t];
   const Triangle U = triangles_[u];
   assert(flag(t, i) == kUnconstrained);

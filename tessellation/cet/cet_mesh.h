@@ -121,6 +121,8 @@ class CetMesh {
   // neighbour = (a, d, c): a is M0 of both, and edge 0 of each is an old outer edge. The quad must be
   // strictly convex and edge i unconstrained. Flags and outside bits travel with their edges.
   void flip(TriangleId t, int i);
+  // The same when the caller already knows the neighbour's local index j of the shared edge.
+  void flip(TriangleId t, int i, int j);
   // Splits t by vertex v strictly inside it into three triangles (t is reused).
   SplitResult splitTriangle(TriangleId t, VertexId v);
   // Splits edge i of t (and the neighbour's side) by vertex v strictly inside the edge into four

@@ -150,12 +150,13 @@ InsertOutcome Triangulator::insertLocated(VertexId v, const Location& loc) {
     const TriangleId t = flipStack_.back();
     flipStack_.pop_back();
     if (mesh_.isConstrained(t, 0)) continue;
-    const EdgeRef across = mesh_.twin(EdgeRef{t, 0});
-    const VertexId d = mesh_.vertex(across.t, across.i);
+    const TriangleId u = mesh_.neighbor(t, 0);
+    const int j = mesh_.edgeTo(u, t);  // unique: two triangles share at most one edge here
+    const VertexId d = mesh_.vertex(u, j);
     if (!inCircumcircle(mesh_, t, d)) continue;
-    mesh_.flip(t, 0);
+    mesh_.flip(t, 0, j);
     flipStack_.push_back(t);
-    flipStack_.push_back(across.t);
+    flipStack_.push_back(u);
   }
   lastTouched_ = mesh_.incident(v);
   return InsertOutcome::kInserted;
