@@ -293,6 +293,12 @@ Status Triangulator::insertSegmentPiece(VertexId a, VertexId b, VertexId* reache
         return Status{};
       }
       const double oy = orient2d(pa, pb, mesh_.point(y));
+      if (oy == 0.0 && strictlyBetween(pa, pb, mesh_.point(y))) {
+        // Reached here when (a, y) is a hull edge, whose other triangle is a ghost.
+        setConstraintFlags(a, y);
+        *reached = y;
+        return Status{};
+      }
       if (ox < 0.0 && oy > 0.0) {
         start = t, startEdge = k, right = x, left = y;
         break;

@@ -56,7 +56,7 @@ class Triangulator {
   void reserve(std::size_t vertices);
 
   // Appends points to the vertex array without inserting them; returns the id of the first one.
-  // Ids are consecutive, in the given order. Points must be finite.
+  // Ids are consecutive, in the given order. Coordinates must satisfy supportedCoordinate() (types.h).
   VertexId addVertices(const Point2* points, std::size_t count);
 
   // Inserts every vertex appended since the last call, ordered by a kd-tree permutation (recursive
