@@ -162,16 +162,17 @@ InsertOutcome Triangulator::insertLocated(VertexId v, const Location& loc) {
   return InsertOutcome::kInserted;
 }
 
-bool Triangulator::insertPending() {
+bool Triangulator::insertPending(bool alreadyKdOrdered) {
   if (mesh_.empty() && !buildFirstTriangle()) return false;
   const auto n = static_cast<VertexId>(mesh_.vertexCount());
-  order_.clear();
-  for (VertexId v = firstPending_; v < n; ++v) {
-    if (mesh_.incident(v) == kNoTriangle && merged_.find(v) == merged_.end()) order_.push_back(v);
-  }
-  kdPermutation(mesh_.points(), order_.data(), order_.size());
+  // All pending ids, including the first triangle's three (skipped below, but still parents), so
+  // that a caller's kd-ordered array keeps its tree shape.
+  order_.resize(n - firstPending_);
+  for (VertexId v = firstPending_; v < n; ++v) order_[v - firstPending_] = v;
+  if (!alreadyKdOrdered) kdPermutation(mesh_.points(), order_.data(), order_.size());
   std::vector<KdRange> queue;
   forEachBreadthFirst(order_.data(), order_.size(), queue, [&](VertexId v, VertexId parent) {
+    if (mesh_.incident(v) != kNoTriangle || merged_.count(v) != 0) return;  // already in
     TriangleId hint = lastTouched_;
     if (parent != UINT32_MAX) {
       const VertexId host = representative(parent);

@@ -63,7 +63,9 @@ class Triangulator {
   // median split); each walk starts from the triangle of the vertex's parent in that tree.
   // A vertex equal to an earlier one is merged into it (see representative()). While all vertices
   // seen so far are collinear there is no triangle; they stay pending and the call returns false.
-  bool insertPending();
+  // With alreadyKdOrdered, the caller promises the pending vertices are stored as a kd permutation
+  // (kdPermutation() of them is the identity), which saves the partitioning.
+  bool insertPending(bool alreadyKdOrdered = false);
 
   // Recovers the segment a -> b as an edge (both already inserted), flags it (1 on the side where
   // the triangle runs the same way, 2 on the other, 3 where both directions were given) and

@@ -35,9 +35,9 @@ void fuzzText(const std::uint8_t* data, std::size_t size) {
     return;
   }
   if (poly.points.size() > 5000) return;
-  cet::Triangulator tri;
-  cet::triangulatePoly(poly, tri, error);
-  checkTriangulation(tri);
+  cet::PolyTriangulation result;
+  cet::triangulatePoly(poly, result, error);
+  checkTriangulation(result.tri);
 }
 
 // Mode 1: the bytes are small-integer points (many collinear and co-circular) and segments.

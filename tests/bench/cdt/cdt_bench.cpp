@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-#include "cet/triangulator.h"
+#include "cet/poly_triangulation.h"
 #include "poly_generators.h"
 
 namespace {
@@ -30,13 +30,11 @@ struct CetRun {
 
 CetRun runCet(const cet::PolyData& d) {
   const auto start = Clock::now();
-  cet::Triangulator tri;
-  tri.reserve(d.points.size());
-  tri.addVertices(d.points.data(), d.points.size());
-  tri.insertPending();
-  for (auto s : d.segments) tri.insertSegment(s[0], s[1]);
-  tri.markDomain(cet::DomainRule::kHullAndHolePoints, d.holes.data(), d.holes.size());
+  cet::PolyTriangulation result;  // what `cetview cdt` runs
+  std::string error;
+  if (!cet::triangulatePoly(d, result, error)) std::fprintf(stderr, "cdt_bench: %s\n", error.c_str());
   const auto end = Clock::now();
+  const cet::Triangulator& tri = result.tri;
   const cet::CetMesh& m = tri.mesh();
   return CetRun{ms(start, end), tri.insideTriangleCount(),
                 static_cast<double>(m.bytesTriangles()) / static_cast<double>(m.triangleCount()),
