@@ -24,11 +24,11 @@ int runCdt(const CdtOptions& options) {
     std::fprintf(stderr, "cetview cdt: %s\n", error.c_str());
     return 2;
   }
-  cet::Triangulator tri;
+  cet::PolyTriangulation result;
   const auto start = std::chrono::steady_clock::now();
-  const bool ok = cet::triangulatePoly(data, tri, error);
+  const bool ok = cet::triangulatePoly(data, result, error);
   std::vector<cet::VertexId> triangles;
-  if (ok) tri.collectTriangles(triangles);
+  if (ok) result.collectInputTriangles(triangles);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!ok) {
     std::fprintf(stderr, "cetview cdt: %s: %s\n", options.input.c_str(), error.c_str());
@@ -43,7 +43,7 @@ int runCdt(const CdtOptions& options) {
     std::printf(
         "{\"input\":\"%s\",\"points\":%zu,\"segments\":%zu,\"holes\":%zu,\"merged\":%zu,\"triangles\":%zu,\"ms\":%.3f,"
         "\"node\":\"%s.node\",\"ele\":\"%s.ele\"}\n",
-        options.input.c_str(), data.points.size(), data.segments.size(), data.holes.size(), tri.mergedCount(), count,
+        options.input.c_str(), data.points.size(), data.segments.size(), data.holes.size(), result.tri.mergedCount(), count,
         ms, options.output.c_str(), options.output.c_str());
   } else {
     std::printf("cdt: %zu points, %zu segments, %zu holes -> %zu triangles in %.3f ms (%s.node, %s.ele)\n",

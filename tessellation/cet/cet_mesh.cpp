@@ -127,51 +127,28 @@ void CetMesh::touchVertices(TriangleId t) {
   }
 }
 
-void CetMesh::flip(TriangleId t, int i) {
-  const TriangleId u = triangles_[t].N[i];
-  const EdgeRef tw = twin(EdgeRef{t, i});
-  const int j = tw.i;
-  const Triangle T = triangles_[t];
-  const Triangle U = triangles_[u];
-  assert(flag(t, i) == kUnconstrained);
+void CetMesh::flip(TriangleId t, int i) { flip(t, i, twin(EdgeRef{t, i}).i); }
 
-  const VertexId a = T.M[i], b = T.M[next3(i)], c = T.M[prev3(i)];
-  const VertexId d = U.M[j];
+void CetMesh::flip(TriangleId t, int i, int j) {
+  Triangle& T = triangles_[t];
+  const TriangleId u = T.N[i];
+  Triangle& U = triangles_[u];
+  assert(flag(t, i) == kUnconstrained);
+  const int ti1 = next3(i), ti2 = prev3(i), uj1 = next3(j), uj2 = prev3(j);
+  const VertexId a = T.M[i], b = T.M[ti1], c = T.M[ti2], d = U.M[j];
   // Outer edges: (b, d) was U's edge opposite c, (d, c) U's edge opposite b,
   //              (c, a) T's edge opposite b, (a, b) T's edge opposite c.
-  const int uOppC = next3(j), uOppB = prev3(j);
-  const int tOppB = next3(i), tOppC = prev3(i);
-  const TriangleId nBD = U.N[uOppC], nDC = U.N[uOppB], nCA = T.N[tOppB], nAB = T.N[tOppC];
-  const auto fBD = static_cast<unsigned>((U.bits >> (2 * uOppC)) & 3u);
-  const auto fDC = static_cast<unsigned>((U.bits >> (2 * uOppB)) & 3u);
-  const auto fCA = static_cast<unsigned>((T.bits >> (2 * tOppB)) & 3u);
-  const auto fAB = static_cast<unsigned>((T.bits >> (2 * tOppC)) & 3u);
-  const std::uint8_t tOut = T.bits & kOutsideBit, uOut = U.bits & kOutsideBit;
-
+  const TriangleId nBD = U.N[uj1], nDC = U.N[uj2], nCA = T.N[ti1], nAB = T.N[ti2];
+  const unsigned fBD = (U.bits >> (2 * uj1)) & 3u, fDC = (U.bits >> (2 * uj2)) & 3u;
+  const unsigned fCA = (T.bits >> (2 * ti1)) & 3u, fAB = (T.bits >> (2 * ti2)) & 3u;
+  const unsigned tOut = T.bits & kOutsideBit, uOut = U.bits & kOutsideBit;
   // t' = (a, b, d): opposite a (b, d), opposite b (d, a) = u', opposite d (a, b).
-  Triangle& nt = triangles_[t];
-  nt.M[0] = a, nt.M[1] = b, nt.M[2] = d;
-  nt.N[0] = nBD, nt.N[1] = u, nt.N[2] = nAB;
-  nt.bits = static_cast<std::uint8_t>(fBD | (fAB << 4) | tOut);
+  T = Triangle{{a, b, d}, {nBD, u, nAB}, static_cast<std::uint8_t>(fBD | (fAB << 4) | tOut)};
   // u' = (a, d, c): opposite a (d, c), opposite d (c, a), opposite c (a, d) = t'.
-  Triangle& nu = triangles_[u];
-  nu.M[0] = a, nu.M[1] = d, nu.M[2] = c;
-  nu.N[0] = nDC, nu.N[1] = nCA, nu.N[2] = t;
-  nu.bits = static_cast<std::uint8_t>(fDC | (fCA << 2) | uOut);
-
+  U = Triangle{{a, d, c}, {nDC, nCA, t}, static_cast<std::uint8_t>(fDC | (fCA << 2) | uOut)};
   // The two outer triangles that changed owner point back to their new neighbour.
-  {
-    Triangle& o = triangles_[nBD];
-    for (TriangleId& n : o.N) {
-      if (n == u) { n = t; break; }
-    }
-  }
-  {
-    Triangle& o = triangles_[nCA];
-    for (TriangleId& n : o.N) {
-      if (n == t) { n = u; break; }
-    }
-  }
+  replaceNeighbor(nBD, u, t);
+  replaceNeighbor(nCA, t, u);
   if (a != kInfiniteVertex) L_[a] = t;
   if (b != kInfiniteVertex) L_[b] = t;
   if (d != kInfiniteVertex) L_[d] = t;

@@ -45,8 +45,10 @@ inline EdgeFlag twinFlag(EdgeFlag f) {
   return f == kAlongLoop ? kAgainstLoop : f == kAgainstLoop ? kAlongLoop : f;
 }
 
-inline int next3(int i) { return i == 2 ? 0 : i + 1; }
-inline int prev3(int i) { return i == 0 ? 2 : i - 1; }
+inline constexpr int kNext3[3] = {1, 2, 0};
+inline constexpr int kPrev3[3] = {2, 0, 1};
+inline int next3(int i) { return kNext3[i]; }
+inline int prev3(int i) { return kPrev3[i]; }
 
 // An edge as (triangle, local index of the opposite vertex).
 struct EdgeRef {
@@ -121,6 +123,8 @@ class CetMesh {
   // neighbour = (a, d, c): a is M0 of both, and edge 0 of each is an old outer edge. The quad must be
   // strictly convex and edge i unconstrained. Flags and outside bits travel with their edges.
   void flip(TriangleId t, int i);
+  // The same when the caller already knows the neighbour's local index j of the shared edge.
+  void flip(TriangleId t, int i, int j);
   // Splits t by vertex v strictly inside it into three triangles (t is reused).
   SplitResult splitTriangle(TriangleId t, VertexId v);
   // Splits edge i of t (and the neighbour's side) by vertex v strictly inside the edge into four
@@ -134,6 +138,16 @@ class CetMesh {
  private:
   static constexpr std::uint8_t kOutsideBit = 1u << 6;
   void setFlagOneSide(TriangleId t, int i, EdgeFlag f);
+  void replaceNeighbor(TriangleId t, TriangleId from, TriangleId to) {
+    TriangleId* n = triangles_[t].N;
+    if (n[0] == from) {
+      n[0] = to;
+    } else if (n[1] == from) {
+      n[1] = to;
+    } else {
+      n[2] = to;
+    }
+  }
   void touchVertices(TriangleId t);  // points each finite vertex's L at t
 
   std::vector<Point2> points_;      // p of each vertex

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 
 namespace cet::exact {
 
@@ -67,31 +68,67 @@ inline Expansion<2> difference(double a, double b) {
   return e;
 }
 
-// h = e + f, with zero components removed. Merges the components by magnitude, then carries a
-// running two-sum (Shewchuk's fast-expansion-sum, with the always-correct two-sum at each step).
+// h = e + f with zero components removed; returns the length of h (at most en + fn). h must not
+// alias e or f. Merges the components by magnitude, then carries a running two-sum (Shewchuk's
+// fast-expansion-sum, with the always-correct two-sum at each step).
+inline std::size_t sumInto(const double* e, std::size_t en, const double* f, std::size_t fn, double* h) {
+  if (en == 0) {
+    for (std::size_t k = 0; k < fn; ++k) h[k] = f[k];
+    return fn;
+  }
+  if (fn == 0) {
+    for (std::size_t k = 0; k < en; ++k) h[k] = e[k];
+    return en;
+  }
+  std::size_t i = 0, j = 0, hn = 0;
+  const auto magnitude = [](double v) { return v < 0 ? -v : v; };
+  // The smallest component starts the running sum q.
+  double q;
+  if (magnitude(e[0]) < magnitude(f[0])) {
+    q = e[i++];
+  } else {
+    q = f[j++];
+  }
+  while (i < en || j < fn) {
+    double next;
+    if (j >= fn || (i < en && magnitude(e[i]) < magnitude(f[j]))) {
+      next = e[i++];
+    } else {
+      next = f[j++];
+    }
+    double qNew, err;
+    twoSum(q, next, qNew, err);
+    if (err != 0.0) h[hn++] = err;
+    q = qNew;
+  }
+  if (q != 0.0) h[hn++] = q;
+  return hn;
+}
+
+// h = e * b with zero components removed (Shewchuk's scale-expansion); returns the length of h
+// (at most 2 en). h must not alias e.
+inline std::size_t scaleInto(const double* e, std::size_t en, double b, double* h) {
+  if (en == 0 || b == 0.0) return 0;
+  std::size_t hn = 0;
+  double q, err;
+  twoProduct(e[0], b, q, err);
+  if (err != 0.0) h[hn++] = err;
+  for (std::size_t i = 1; i < en; ++i) {
+    double productHi, productLo, s;
+    twoProduct(e[i], b, productHi, productLo);
+    twoSum(q, productLo, s, err);
+    if (err != 0.0) h[hn++] = err;
+    twoSum(productHi, s, q, err);
+    if (err != 0.0) h[hn++] = err;
+  }
+  if (q != 0.0) h[hn++] = q;
+  return hn;
+}
+
 template <std::size_t N, std::size_t M>
 Expansion<N + M> sum(const Expansion<N>& e, const Expansion<M>& f) {
   Expansion<N + M> h;
-  if (e.n == 0 && f.n == 0) return h;
-  double merged[N + M];
-  std::size_t i = 0, j = 0, k = 0;
-  while (i < e.n && j < f.n) {
-    const double ei = e.c[i], fj = f.c[j];
-    const bool takeE = (ei < 0 ? -ei : ei) < (fj < 0 ? -fj : fj);
-    merged[k++] = takeE ? e.c[i++] : f.c[j++];
-  }
-  while (i < e.n) merged[k++] = e.c[i++];
-  while (j < f.n) merged[k++] = f.c[j++];
-
-  double q = merged[0];
-  for (std::size_t m = 1; m < k; ++m) {
-    double qNew, err;
-    twoSum(q, merged[m], qNew, err);
-    if (err != 0.0) h.c[h.n++] = err;
-    q = qNew;
-  }
-  if (q != 0.0 || h.n == 0) h.c[h.n++] = q;
-  if (h.n == 1 && h.c[0] == 0.0) h.n = 0;
+  h.n = sumInto(e.c, e.n, f.c, f.n, h.c);
   return h;
 }
 
@@ -101,40 +138,24 @@ Expansion<N> negate(Expansion<N> e) {
   return e;
 }
 
-// h = e * b, zero components removed (Shewchuk's scale-expansion).
-template <std::size_t N>
-Expansion<2 * N> scale(const Expansion<N>& e, double b) {
-  Expansion<2 * N> h;
-  if (e.n == 0 || b == 0.0) return h;
-  double q, err;
-  twoProduct(e.c[0], b, q, err);
-  if (err != 0.0) h.c[h.n++] = err;
-  for (std::size_t i = 1; i < e.n; ++i) {
-    double productHi, productLo, s;
-    twoProduct(e.c[i], b, productHi, productLo);
-    twoSum(q, productLo, s, err);
-    if (err != 0.0) h.c[h.n++] = err;
-    twoSum(productHi, s, q, err);
-    if (err != 0.0) h.c[h.n++] = err;
-  }
-  if (q != 0.0 || h.n == 0) h.c[h.n++] = q;
-  if (h.n == 1 && h.c[0] == 0.0) h.n = 0;
-  return h;
-}
-
-// h = e * f: the sum of e scaled by each component of f.
+// h = e * f: the sum of e scaled by each component of f, accumulated in two buffers that swap.
 template <std::size_t N, std::size_t M>
 Expansion<2 * N * M> product(const Expansion<N>& e, const Expansion<M>& f) {
   Expansion<2 * N * M> h;
+  double other[2 * N * M];
+  double term[2 * N];
+  double* acc = h.c;
+  double* spare = other;
+  std::size_t n = 0;
   for (std::size_t j = 0; j < f.n; ++j) {
-    const Expansion<2 * N> term = scale(e, f.c[j]);
-    Expansion<2 * N * M> next;
-    // Accumulate into a buffer of the final capacity; the running sum never exceeds it.
-    const auto s = sum(h, term);
-    for (std::size_t k = 0; k < s.n; ++k) next.c[k] = s.c[k];
-    next.n = s.n;
-    h = next;
+    const std::size_t tn = scaleInto(e.c, e.n, f.c[j], term);
+    n = sumInto(acc, n, term, tn, spare);
+    std::swap(acc, spare);
   }
+  if (acc != h.c) {
+    for (std::size_t k = 0; k < n; ++k) h.c[k] = acc[k];
+  }
+  h.n = n;
   return h;
 }
 

@@ -12,13 +12,21 @@ struct Pending {
   std::uint32_t lo, hi;
   Box box;
 };
+// The points are copied next to their ids while partitioning, so nth_element compares contiguous
+// memory instead of chasing ids into the vertex array (several times faster on large inputs).
+struct Item {
+  double x, y;
+  std::uint32_t id;
+};
 }  // namespace
 
 void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n) {
   if (n < 2) return;
+  std::vector<Item> items(n);
   Box all{points[ids[0]].x, points[ids[0]].y, points[ids[0]].x, points[ids[0]].y};
-  for (std::size_t i = 1; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const Point2 p = points[ids[i]];
+    items[i] = Item{p.x, p.y, ids[i]};
     all.minX = std::min(all.minX, p.x), all.maxX = std::max(all.maxX, p.x);
     all.minY = std::min(all.minY, p.y), all.maxY = std::max(all.maxY, p.y);
   }
@@ -26,6 +34,7 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n) {
   // cut at the median, which is enough to choose the longer axis without rescanning points.
   std::vector<Pending> stack;
   stack.push_back(Pending{0, static_cast<std::uint32_t>(n), all});
+  Item* const it = items.data();
   while (!stack.empty()) {
     const Pending r = stack.back();
     stack.pop_back();
@@ -33,15 +42,13 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n) {
     const std::uint32_t mid = r.lo + (r.hi - r.lo) / 2;
     const bool splitX = (r.box.maxX - r.box.minX) >= (r.box.maxY - r.box.minY);
     if (splitX) {
-      std::nth_element(ids + r.lo, ids + mid, ids + r.hi, [points](std::uint32_t a, std::uint32_t b) {
-        return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
-      });
+      std::nth_element(it + r.lo, it + mid, it + r.hi,
+                       [](const Item& a, const Item& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     } else {
-      std::nth_element(ids + r.lo, ids + mid, ids + r.hi, [points](std::uint32_t a, std::uint32_t b) {
-        return points[a].y < points[b].y || (points[a].y == points[b].y && points[a].x < points[b].x);
-      });
+      std::nth_element(it + r.lo, it + mid, it + r.hi,
+                       [](const Item& a, const Item& b) { return a.y < b.y || (a.y == b.y && a.x < b.x); });
     }
-    const Point2 m = points[ids[mid]];
+    const Item m = it[mid];
     Box lower = r.box, upper = r.box;
     if (splitX) {
       lower.maxX = m.x, upper.minX = m.x;
@@ -51,6 +58,7 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n) {
     stack.push_back(Pending{r.lo, mid, lower});
     stack.push_back(Pending{mid + 1, r.hi, upper});
   }
+  for (std::size_t i = 0; i < n; ++i) ids[i] = items[i].id;
 }
 
 }  // namespace cet

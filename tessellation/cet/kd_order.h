@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -21,26 +22,39 @@ struct KdRange {
   std::uint32_t parent;  // id of the parent median, or UINT32_MAX for the root
 };
 
-// Calls visit(id, parentId) for every id of a kd permutation in breadth-first order of its tree
-// (parentId is UINT32_MAX for the root). `queue` is scratch storage, reused between calls.
+// Calls visit(id, parentId) for every id of a kd permutation, parents before children (parentId is
+// UINT32_MAX for the root). The tree is walked breadth-first down to subtrees of about kLocalBlock
+// points; those subtrees are then visited one after the other, each breadth-first. The first phase
+// spreads points coarse-to-fine over the whole domain; the second keeps consecutive insertions in
+// one small region, so the triangles they touch stay in cache. Either phase queues at most about
+// n / kLocalBlock or kLocalBlock ranges. `queue` is scratch, reused.
+inline constexpr std::uint32_t kLocalBlock = 2048;
+
 template <class Visit>
 void forEachBreadthFirst(const std::uint32_t* ids, std::size_t n, std::vector<KdRange>& queue, Visit&& visit) {
   queue.clear();
   if (n == 0) return;
-  queue.push_back(KdRange{0, static_cast<std::uint32_t>(n), UINT32_MAX});
-  std::size_t head = 0;
-  while (head < queue.size()) {
-    const KdRange r = queue[head++];
-    const std::uint32_t mid = r.lo + (r.hi - r.lo) / 2;
-    visit(ids[mid], r.parent);
-    if (mid > r.lo) queue.push_back(KdRange{r.lo, mid, ids[mid]});
-    if (mid + 1 < r.hi) queue.push_back(KdRange{mid + 1, r.hi, ids[mid]});
-    // Drop the consumed front now and then so the queue holds about one tree level, not all ranges.
-    if (head > 4096 && head * 2 > queue.size()) {
-      queue.erase(queue.begin(), queue.begin() + static_cast<std::ptrdiff_t>(head));
-      head = 0;
+  std::vector<KdRange> blocks;
+  const auto run = [&](KdRange root, bool deferSmall) {
+    queue.clear();
+    queue.push_back(root);
+    std::size_t head = 0;
+    while (head < queue.size()) {
+      const KdRange r = queue[head++];
+      if (deferSmall && r.hi - r.lo <= kLocalBlock) {
+        blocks.push_back(r);
+        continue;
+      }
+      const std::uint32_t mid = r.lo + (r.hi - r.lo) / 2;
+      visit(ids[mid], r.parent);
+      if (mid > r.lo) queue.push_back(KdRange{r.lo, mid, ids[mid]});
+      if (mid + 1 < r.hi) queue.push_back(KdRange{mid + 1, r.hi, ids[mid]});
     }
-  }
+  };
+  run(KdRange{0, static_cast<std::uint32_t>(n), UINT32_MAX}, n > kLocalBlock);
+  // Blocks come out in tree order: neighbouring blocks are neighbouring regions.
+  std::sort(blocks.begin(), blocks.end(), [](const KdRange& a, const KdRange& b) { return a.lo < b.lo; });
+  for (const KdRange& b : blocks) run(b, false);
 }
 
 }  // namespace cet

@@ -83,6 +83,15 @@ class Parser {
     return true;
   }
 
+  // A coordinate the exact predicates can handle (see supportedCoordinate()).
+  bool coordinate(const Line& l, std::size_t k, double& value, const char* what) {
+    if (!real(l, k, value, what)) return false;
+    if (!supportedCoordinate(value)) {
+      return fail(l.number, std::string(what) + " '" + l.tokens[k] + "' is outside the supported range (0 or 1e-50 to 1e50 in magnitude)");
+    }
+    return true;
+  }
+
   bool count(const Line& l, std::size_t k, long long& value, const char* what) {
     if (!integer(l, k, value, what)) return false;
     if (value < 0) return fail(l.number, std::string(what) + " is negative");
@@ -141,7 +150,7 @@ bool readVertices(Parser& p, PolyData& out, bool allowEmpty, bool& empty) {
       return p.fail(l->number, "vertex number " + std::to_string(id) + " should be " + std::to_string(out.base + i));
     }
     Point2 q;
-    if (!p.real(*l, 1, q.x, "x") || !p.real(*l, 2, q.y, "y")) return false;
+    if (!p.coordinate(*l, 1, q.x, "x") || !p.coordinate(*l, 2, q.y, "y")) return false;
     out.points.push_back(q);
     for (std::size_t a = 0; a < out.attributeCount; ++a) {
       double v = 0;
@@ -196,7 +205,7 @@ bool readRest(Parser& p, PolyData& out) {
     const Line* l = p.take(3, "a hole");
     if (!l) return false;
     Point2 q;
-    if (!p.real(*l, 1, q.x, "hole x") || !p.real(*l, 2, q.y, "hole y")) return false;
+    if (!p.coordinate(*l, 1, q.x, "hole x") || !p.coordinate(*l, 2, q.y, "hole y")) return false;
     out.holes.push_back(q);
   }
   // Regional attributes and area constraints may follow; the triangulator does not use them.

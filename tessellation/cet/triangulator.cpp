@@ -150,27 +150,29 @@ InsertOutcome Triangulator::insertLocated(VertexId v, const Location& loc) {
     const TriangleId t = flipStack_.back();
     flipStack_.pop_back();
     if (mesh_.isConstrained(t, 0)) continue;
-    const EdgeRef across = mesh_.twin(EdgeRef{t, 0});
-    const VertexId d = mesh_.vertex(across.t, across.i);
+    const TriangleId u = mesh_.neighbor(t, 0);
+    const int j = mesh_.edgeTo(u, t);  // unique: two triangles share at most one edge here
+    const VertexId d = mesh_.vertex(u, j);
     if (!inCircumcircle(mesh_, t, d)) continue;
-    mesh_.flip(t, 0);
+    mesh_.flip(t, 0, j);
     flipStack_.push_back(t);
-    flipStack_.push_back(across.t);
+    flipStack_.push_back(u);
   }
   lastTouched_ = mesh_.incident(v);
   return InsertOutcome::kInserted;
 }
 
-bool Triangulator::insertPending() {
+bool Triangulator::insertPending(bool alreadyKdOrdered) {
   if (mesh_.empty() && !buildFirstTriangle()) return false;
   const auto n = static_cast<VertexId>(mesh_.vertexCount());
-  order_.clear();
-  for (VertexId v = firstPending_; v < n; ++v) {
-    if (mesh_.incident(v) == kNoTriangle && merged_.find(v) == merged_.end()) order_.push_back(v);
-  }
-  kdPermutation(mesh_.points(), order_.data(), order_.size());
+  // All pending ids, including the first triangle's three (skipped below, but still parents), so
+  // that a caller's kd-ordered array keeps its tree shape.
+  order_.resize(n - firstPending_);
+  for (VertexId v = firstPending_; v < n; ++v) order_[v - firstPending_] = v;
+  if (!alreadyKdOrdered) kdPermutation(mesh_.points(), order_.data(), order_.size());
   std::vector<KdRange> queue;
   forEachBreadthFirst(order_.data(), order_.size(), queue, [&](VertexId v, VertexId parent) {
+    if (mesh_.incident(v) != kNoTriangle || merged_.count(v) != 0) return;  // already in
     TriangleId hint = lastTouched_;
     if (parent != UINT32_MAX) {
       const VertexId host = representative(parent);
@@ -292,6 +294,12 @@ Status Triangulator::insertSegmentPiece(VertexId a, VertexId b, VertexId* reache
         return Status{};
       }
       const double oy = orient2d(pa, pb, mesh_.point(y));
+      if (oy == 0.0 && strictlyBetween(pa, pb, mesh_.point(y))) {
+        // Reached here when (a, y) is a hull edge, whose other triangle is a ghost.
+        setConstraintFlags(a, y);
+        *reached = y;
+        return Status{};
+      }
       if (ox < 0.0 && oy > 0.0) {
         start = t, startEdge = k, right = x, left = y;
         break;

@@ -56,14 +56,16 @@ class Triangulator {
   void reserve(std::size_t vertices);
 
   // Appends points to the vertex array without inserting them; returns the id of the first one.
-  // Ids are consecutive, in the given order. Points must be finite.
+  // Ids are consecutive, in the given order. Coordinates must satisfy supportedCoordinate() (types.h).
   VertexId addVertices(const Point2* points, std::size_t count);
 
   // Inserts every vertex appended since the last call, ordered by a kd-tree permutation (recursive
   // median split); each walk starts from the triangle of the vertex's parent in that tree.
   // A vertex equal to an earlier one is merged into it (see representative()). While all vertices
   // seen so far are collinear there is no triangle; they stay pending and the call returns false.
-  bool insertPending();
+  // With alreadyKdOrdered, the caller promises the pending vertices are stored as a kd permutation
+  // (kdPermutation() of them is the identity), which saves the partitioning.
+  bool insertPending(bool alreadyKdOrdered = false);
 
   // Recovers the segment a -> b as an edge (both already inserted), flags it (1 on the side where
   // the triangle runs the same way, 2 on the other, 3 where both directions were given) and

@@ -21,6 +21,15 @@ struct Point2 {
   double y = 0.0;
 };
 
+// The exact predicates are exact while no product overflows or underflows: coordinates must be
+// finite with magnitude in [kMinCoordinate, kMaxCoordinate], or zero. (1e-12 .. 1e12 is well inside.)
+inline constexpr double kMaxCoordinate = 1e50;
+inline constexpr double kMinCoordinate = 1e-50;
+inline bool supportedCoordinate(double v) {
+  const double m = v < 0 ? -v : v;
+  return v == 0.0 || (m >= kMinCoordinate && m <= kMaxCoordinate);
+}
+
 inline bool operator==(Point2 a, Point2 b) { return a.x == b.x && a.y == b.y; }
 inline bool operator!=(Point2 a, Point2 b) { return !(a == b); }
 

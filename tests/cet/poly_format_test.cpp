@@ -76,6 +76,8 @@ TEST(PolyFormat, MalformedInputGivesOneLineWithTheLine) {
       {"3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1\n", "needs 3 fields"},
       {"3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n2\n1 0 0\n", "declares 2 holes"},
       {"3 2 0 2\n", "marker count must be 0 or 1"},
+      {"3 2 0 0\n1 0 0\n2 1e300 0\n3 0 1\n0 0\n", "outside the supported range"},
+      {"3 2 0 0\n1 0 0\n2 1 1e-300\n3 0 1\n0 0\n", "outside the supported range"},
       {"99999999999 2 0 0\n1 0 0\n", "declares 99999999999 vertices"},
   };
   for (const BadCase& c : cases) {

@@ -232,12 +232,17 @@ TEST(Triangulator, ConcavityIsRemovedLikeTrianglesDashP) {
   PolyData data;
   data.points = p;
   for (std::uint32_t k = 0; k < 6; ++k) data.segments.push_back({k, (k + 1) % 6});
-  Triangulator tri;
+  PolyTriangulation result;
   std::string error;
-  ASSERT_TRUE(triangulatePoly(data, tri, error)) << error;
-  EXPECT_EQ(tri.insideTriangleCount(), 4u);
-  EXPECT_DOUBLE_EQ(coveredArea(tri), 12.0);
-  expectValidCdt(tri);
+  ASSERT_TRUE(triangulatePoly(data, result, error)) << error;
+  EXPECT_EQ(result.tri.insideTriangleCount(), 4u);
+  EXPECT_DOUBLE_EQ(coveredArea(result.tri), 12.0);
+  expectValidCdt(result.tri);
+  std::vector<std::uint32_t> input;
+  result.collectInputTriangles(input);
+  for (std::size_t k = 0; k < input.size(); k += 3) {
+    EXPECT_GT(testing::signedArea2(p[input[k]], p[input[k + 1]], p[input[k + 2]]), 0) << "input numbering, CCW";
+  }
 }
 
 TEST(Triangulator, RefinementBatchesInsertWithoutRebuild) {
