@@ -7,5 +7,7 @@
 namespace cetview {
 
 void addCdtCommand(CLI::App& app, int& exitCode);
+void addExportCommand(CLI::App& app, int& exitCode);
+void addBenchCommand(CLI::App& app, int& exitCode);
 
 }  // namespace cetview

@@ -1,7 +1,8 @@
 // Edge discretisation by recursive subdivision with the two criteria of Laug & Borouchaki (2016,
 // "Discrete CAD model for visualization and meshing", section 2.1): proximity (chordal distance of
 // the curve to each segment, sampled at 1/4, 1/2, 3/4) and regularity (turn angle between the
-// tangents at a segment's ends, and between each tangent and the chord). Level k subdivides the
+// tangents at a segment's ends, and between each tangent and the chord), plus the turn of the surface
+// normals of each face along the segment. Level k subdivides the
 // segments of level k-1 that fail the tolerances of level k, so levels are nested.
 #include "edge_table.h"
 
@@ -11,7 +12,9 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
@@ -43,6 +46,21 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
   const std::size_t n = model.edgeShapes.size();
   info_.resize(n);
   levels_.resize(n);
+  for (FaceId f = 0; f < model.faceShapes.size(); ++f) {
+    const TopoDS_Face face = TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD));
+    const PartId part = model.faces[f].part;
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+      const EdgeId e = model.edgeId(part, it.Current());
+      if (e == UINT32_MAX || info_[e].faces.size() >= 2) continue;
+      bool known = false;
+      for (const FaceUse& use : info_[e].faces) known = known || use.face.IsSame(face);
+      if (known) continue;
+      FaceUse use;
+      use.face = face;
+      use.pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, use.first, use.last);
+      if (!use.pcurve.IsNull()) info_[e].faces.push_back(use);
+    }
+  }
   for (std::size_t e = 0; e < n; ++e) {
     levels_[e].resize(levelCount);
     const TopoDS_Edge edge = TopoDS::Edge(model.edgeShapes[e].Oriented(TopAbs_FORWARD));
@@ -102,26 +120,53 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
   }
   try {
     BRepAdaptor_Curve curve(edge);
-    const double minSize = 0.1 * tol.chordal;  // below it the angle criterion is not applied (as BRepMesh's MinSize)
+    const double minSize = 0.1 * tol.chordal;  // below it the angle criteria are not applied (as BRepMesh's MinSize)
+    // Surface normals of the faces along the edge (their parameter maps linearly onto the edge's).
+    std::vector<BRepAdaptor_Surface> surfaces;
+    for (const FaceUse& use : info.faces) surfaces.emplace_back(use.face, Standard_False);
+    const std::size_t uses = surfaces.size();
+    auto normalsAt = [&](double t, gp_Vec* n) {
+      for (std::size_t k = 0; k < uses; ++k) {
+        const FaceUse& use = info.faces[k];
+        const double s = info.last == info.first ? use.first
+                                                 : use.first + (t - info.first) / (info.last - info.first) * (use.last - use.first);
+        const gp_Pnt2d uv = use.pcurve->Value(s);
+        gp_Pnt p;
+        gp_Vec du, dv;
+        surfaces[k].D1(uv.X(), uv.Y(), p, du, dv);
+        n[k] = du.Crossed(dv);
+        // At a pole one derivative is rounding noise: no normal to compare.
+        if (n[k].Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude() || du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12)
+          n[k] = gp_Vec(0, 0, 0);
+      }
+    };
     auto pointAt = [&](std::size_t i, double t) {
       if (i == 0) return info.p0;
       if (i + 1 == seedT.size()) return info.p1;
       return curve.Value(t);
     };
-    struct Item { double ta, tb; gp_Pnt pa, pb; gp_Vec da, db; int depth; };
+    struct Item {
+      double ta, tb;
+      gp_Pnt pa, pb;
+      gp_Vec da, db;
+      gp_Vec na[2], nb[2];
+      int depth;
+    };
     std::vector<Item> stack;
     gp_Pnt pPrev = pointAt(0, seedT[0]);
     gp_Pnt tmp;
-    gp_Vec dPrev;
+    gp_Vec dPrev, nPrev[2];
     curve.D1(seedT[0], tmp, dPrev);
+    normalsAt(seedT[0], nPrev);
     out.t.push_back(seedT[0]);
     out.p.push_back(pPrev);
     for (std::size_t i = 1; i < seedT.size(); ++i) {
       const gp_Pnt pNext = pointAt(i, seedT[i]);
-      gp_Vec dNext;
+      gp_Vec dNext, nNext[2];
       curve.D1(seedT[i], tmp, dNext);
+      normalsAt(seedT[i], nNext);
       // Depth-first, right half pushed first, so points come out in increasing t.
-      stack.push_back({seedT[i - 1], seedT[i], pPrev, pNext, dPrev, dNext, 0});
+      stack.push_back({seedT[i - 1], seedT[i], pPrev, pNext, dPrev, dNext, {nPrev[0], nPrev[1]}, {nNext[0], nNext[1]}, 0});
       while (!stack.empty()) {
         Item s = stack.back();
         stack.pop_back();
@@ -141,6 +186,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
                       angleBetween(chordDir, s.db) > tol.angleRad;
             }
           }
+          for (std::size_t k = 0; k < uses && !split && chord > minSize; ++k) split = angleBetween(s.na[k], s.nb[k]) > tol.angleRad;
         }
         if (!split) {
           out.t.push_back(s.tb);
@@ -149,13 +195,15 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         }
         const double tm = 0.5 * (s.ta + s.tb);
         gp_Pnt pm;
-        gp_Vec dm;
+        gp_Vec dm, nm[2];
         curve.D1(tm, pm, dm);
-        stack.push_back({tm, s.tb, pm, s.pb, dm, s.db, s.depth + 1});
-        stack.push_back({s.ta, tm, s.pa, pm, s.da, dm, s.depth + 1});
+        normalsAt(tm, nm);
+        stack.push_back({tm, s.tb, pm, s.pb, dm, s.db, {nm[0], nm[1]}, {s.nb[0], s.nb[1]}, s.depth + 1});
+        stack.push_back({s.ta, tm, s.pa, pm, s.da, dm, {s.na[0], s.na[1]}, {nm[0], nm[1]}, s.depth + 1});
       }
       pPrev = pNext;
       dPrev = dNext;
+      nPrev[0] = nNext[0], nPrev[1] = nNext[1];
     }
   } catch (const Standard_Failure&) {
     out.t = {info.first, info.last};

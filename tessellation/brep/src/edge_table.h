@@ -6,7 +6,9 @@
 #include <atomic>
 #include <vector>
 
+#include <Geom2d_Curve.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 #include <gp_Pnt.hxx>
 
 #include "brep/tessellator.h"
@@ -36,6 +38,14 @@ class EdgeTable {
   const gp_Pnt& lastPoint(EdgeId e) const { return info_[e].p1; }
 
  private:
+  // A face that uses the edge: its pcurve lets the discretisation keep the surface normals along each
+  // segment within the angular tolerance (no interior point can fix a boundary segment whose ends'
+  // normals differ too much).
+  struct FaceUse {
+    TopoDS_Face face;  // FORWARD
+    Handle(Geom2d_Curve) pcurve;
+    double first = 0, last = 0;  // pcurve range
+  };
   struct Info {
     double first = 0, last = 0;
     gp_Pnt p0, p1;  // vertex positions at first and last
@@ -43,6 +53,7 @@ class EdgeTable {
     bool straight = false;  // a line: one segment is exact
     bool closed = false;    // both ends are the same vertex
     bool broken = false;    // no usable curve: the chord between its vertices stands in for it
+    std::vector<FaceUse> faces;  // at most two
   };
   void discretiseEdge(EdgeId e, int level, const Level& tolerance);
 

@@ -23,9 +23,9 @@
 namespace cetview::brep {
 namespace {
 
-// Passes of batch insertion per level; each pass at least halves the offending triangles' size, so
-// this bounds a level's refinement depth, not its work.
-constexpr int kMaxPasses = 60;
+// Passes of batch insertion per level. A pass splits an independent set of the offending triangles
+// (at least one), so this bounds a level's refinement depth, not its work.
+constexpr int kMaxPasses = 400;
 const bool kDebugRefine = std::getenv("CETVIEW_DEBUG_REFINE") != nullptr;  // traces split decisions
 
 double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::VertexId>& loop) {
@@ -41,6 +41,9 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 
 FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings)
     : topology_(std::move(topology)), settings_(settings), eval_(topology_.face) {
+  const GeomAbs_SurfaceType type = eval_.adaptor().GetType();
+  freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere &&
+              type != GeomAbs_Torus;
   for (const std::string& r : topology_.repairs) repairs_.push_back(r);
   repaired_ = !repairs_.empty();
 }
@@ -340,6 +343,20 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     b[i] = 0;
     sample(b[0], b[1], b[2], static_cast<std::uint8_t>(1 + i));
   }
+  if (freeform_) {
+    // Free-form surfaces can bend inside a triangle between the samples above (bumps narrower than
+    // the triangle): the barycentric grid of step 1/4 as the measurement uses, reported as the
+    // nearest of the four split points.
+    static const double kGrid[9][3] = {{.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}, {.75, .25, 0}, {.25, .75, 0},
+                                       {0, .75, .25},  {0, .25, .75}, {.25, 0, .75}, {.75, 0, .25}};
+    for (const auto& b : kGrid) {
+      int zero = -1;
+      for (int i = 0; i < 3; ++i)
+        if (b[i] == 0) zero = i;
+      if (zero >= 0 && m.isConstrained(t, zero)) continue;
+      sample(b[0], b[1], b[2], zero >= 0 ? static_cast<std::uint8_t>(1 + zero) : 0);
+    }
+  }
   if (collapsed || worstCorresponding > longest) {
     worst = worstCorresponding;
     r.worstSample = worstCorrespondingSample;
@@ -370,48 +387,57 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     r.flags |= TriangleRecord::kFlipped;
 }
 
-bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, double angleRad, const FaceMesh& mesh) const {
+bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const {
   const cet::CetMesh& m = cdt_->mesh();
-  // Required clearance, as a fraction of the chord: above the sagitta ratio (turn angle / 8) of any
-  // chord the edge discretisation of this level accepts.
-  const double clearance = std::min(0.2, std::max(0.05, angleRad / 5));
-  auto pos = [&](cet::VertexId id) {
+  auto vertexPos = [&](cet::VertexId id) {
     const std::size_t o = base_ + id;
     return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
   };
-  // The chord of edge i of triangle s, inside on its left (counter-clockwise triangles).
-  auto clear = [&](cet::TriangleId s, int i, const gp_Pnt& x) {
+  // A boundary chord A -> B (domain on its left) and how far inside it a new point must lie: the
+  // surface under the chord's UV segment bulges away from the 3D chord, within the tangent plane, by
+  // w; where it bulges outwards, a point closer than |w| to the chord would make a flipped triangle.
+  struct Chord {
+    gp_Pnt a;
+    gp_Vec ab, n;
+    double clearance;
+  };
+  Chord chords[12];
+  int count = 0, own = -1;
+  auto addChord = [&](cet::TriangleId s, int i) {
     const cet::VertexId a = m.vertex(s, (i + 1) % 3), b = m.vertex(s, (i + 2) % 3);
-    const gp_Pnt A = pos(a), B = pos(b);
-    const gp_Vec ab(A, B);
-    const double len2 = ab.SquareMagnitude();
-    if (len2 == 0) return true;
+    Chord c;
+    c.a = vertexPos(a);
+    c.ab = gp_Vec(c.a, vertexPos(b));
     gp_Vec n(0, 0, 0);
     if (!singular_[a]) n += gp_Vec(normal_[a]);
     if (!singular_[b]) n += gp_Vec(normal_[b]);
-    if (n.Magnitude() == 0) return true;
-    n.Normalize();
-    return ab.Crossed(gp_Vec(A, x)).Dot(n) >= clearance * len2;
+    const double len = c.ab.Magnitude();
+    if (n.Magnitude() == 0 || len == 0) return;
+    c.n = n.Normalized();
+    const std::size_t oa = base_ + a, ob = base_ + b;
+    const gp_Pnt under = eval_.point(0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]));
+    const gp_Vec inward = c.n.Crossed(c.ab / len);
+    const double w = gp_Vec(c.a.XYZ() + 0.5 * c.ab.XYZ(), under.XYZ()).Dot(inward);
+    c.clearance = (w < 0 ? -1.5 * w : 0.0) + 1e-3 * len;
+    chords[count++] = c;
   };
-  struct Chord { cet::TriangleId s; int i; };
-  Chord chords[12];
-  int count = 0;
-  int own = -1;  // a constrained edge of t itself
   for (int i = 0; i < 3; ++i) {
     if (m.isConstrained(t, i)) {
-      chords[count++] = {t, i};
       own = i;
+      addChord(t, i);
     }
     const cet::TriangleId n = m.neighbor(t, i);
     if (n == cet::kNoTriangle || m.isGhost(n) || m.isOutside(n)) continue;
     for (int j = 0; j < 3; ++j)
-      if (m.isConstrained(n, j)) chords[count++] = {n, j};
+      if (m.isConstrained(n, j)) addChord(n, j);
   }
   if (count == 0) return true;
   auto ok = [&](double uu, double vv) {
     const gp_Pnt x = eval_.point(uu, vv);
-    for (int c = 0; c < count; ++c)
-      if (!clear(chords[c].s, chords[c].i, x)) return false;
+    for (int c = 0; c < count; ++c) {
+      const Chord& ch = chords[c];
+      if (ch.ab.Crossed(gp_Vec(ch.a, x)).Dot(ch.n) < ch.clearance * ch.ab.Magnitude()) return false;
+    }
     return true;
   };
   if (ok(u, v)) return true;
@@ -460,6 +486,12 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         at = 0;
       }
       if (at < 0) continue;
+      // One split per neighbourhood and pass: points requested by adjacent triangles in the same
+      // pass crowd each other and leave slivers that need more points.
+      if (touched_.size() < m.vertexCount()) touched_.resize(m.vertexCount(), -1);
+      if ((touched_[m.vertex(t, 0)] == pass || touched_[m.vertex(t, 1)] == pass || touched_[m.vertex(t, 2)] == pass)) {
+        continue;
+      }
       if (kDebugRefine) { fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
         for (int i = 0; i < 3; ++i) { auto o = base_ + m.vertex(t, i); fprintf(stderr, " [%u %.5f %.5f n %.3f %.3f %.3f s%d]", m.vertex(t,i), mesh.uv[2*o], mesh.uv[2*o+1], normal_[m.vertex(t,i)].X(), normal_[m.vertex(t,i)].Y(), normal_[m.vertex(t,i)].Z(), singular_[m.vertex(t,i)]); }
         fprintf(stderr, "\n"); }
@@ -470,12 +502,14 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         const std::size_t o = base_ + m.vertex(t, i);
         u += b[i] * mesh.uv[2 * o], v += b[i] * mesh.uv[2 * o + 1];
       }
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, level.angleRad, mesh)) {
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh)) {
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;
         cache_.insert(stuck);
         continue;
       }
+      if (kDebugRefine) fprintf(stderr, "  -> split at %.6f %.6f\n", u, v);
+      for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = pass;
       uvs.emplace_back(u, v);
       points_.push_back(scaled(u, v));
     }

@@ -65,11 +65,11 @@ class FaceMesher {
   void appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p);
   cet::Point2 scaled(double u, double v) const { return {(u - eval_.u0) * eval_.su, (v - eval_.v0) * eval_.sv}; }
   void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const;
-  // Keeps a split point of triangle t off the boundary chords near it: a point closer to a chord than
-  // a fraction of its length can land on the wrong side of it in 3D (a chord cuts into the surface by
-  // its in-surface sagitta) and make a flipped triangle nothing can repair. Moves (u, v) towards the
-  // opposite corner when needed; false when no safe point was found.
-  bool safeSplit(cet::TriangleId t, double& u, double& v, double angleRad, const FaceMesh& mesh) const;
+  // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
+  // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
+  // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
+  // towards the opposite corner when needed; false when no safe point was found.
+  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const;
 
   FaceTopology topology_;
   FaceMesherSettings settings_;
@@ -83,12 +83,14 @@ class FaceMesher {
   bool repaired_ = false;
   std::vector<std::string> repairs_;
   bool fallback_ = false;
+  bool freeform_ = false;  // B-spline, Bezier, offset, swept...: sampled more densely
   FaceStatus fallbackStatus_ = FaceStatus::kFallback;
   int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
   // Scratch.
   std::vector<cet::Point2> points_;
   std::vector<cet::VertexId> ids_;
   std::vector<cet::InsertOutcome> outcomes_;
+  std::vector<int> touched_;  // the refinement pass that last split a triangle at this vertex
 };
 
 }  // namespace cetview::brep

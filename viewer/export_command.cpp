@@ -1,0 +1,98 @@
+// `cetview export MODEL -o OUT.{brep,glb,gltf,obj,stl} [--deflection D] [--angle A] [--threads N]`:
+// the final tessellation of a model, written through OpenCASCADE's writers (tessellation/brep).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "brep/export.h"
+#include "brep/model.h"
+#include "brep/tessellator.h"
+#include "commands.h"
+
+namespace cetview {
+namespace {
+
+struct ExportOptions {
+  std::string model;
+  std::string output;
+  std::string deflection = "0.1%";
+  std::string angle = "20";
+  unsigned threads = 0;
+};
+
+int runExport(const ExportOptions& o) {
+  using namespace brep;
+  MeshParams params;
+  std::string error = parseDeflection(o.deflection, params.chordal);
+  if (error.empty()) error = parseAngle(o.angle, params.angleDeg);
+  if (error.empty() && !exportFormatSupported(o.output))
+    error = o.output + ": unknown output format (use .brep, .glb, .gltf, .obj or .stl)";
+  if (!error.empty()) {
+    std::fprintf(stderr, "cetview export: %s\n", error.c_str());
+    return 2;
+  }
+  params.progressive = false;  // only the final level is written
+  const auto start = std::chrono::steady_clock::now();
+  LoadResult loaded = loadModel(o.model);
+  if (!loaded) {
+    std::fprintf(stderr, "cetview export: %s\n", loaded.error.c_str());
+    return 2;
+  }
+  auto created = Tessellator::create(*loaded.model, params);
+  if (!created.tessellator) {
+    std::fprintf(stderr, "cetview export: %s: %s\n", o.model.c_str(), created.error.c_str());
+    return 2;
+  }
+  Tessellator& t = *created.tessellator;
+  const unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  // Progress on a terminal only, at most every 100 ms.
+  const bool tty = isatty(fileno(stderr)) != 0;
+  auto last = std::chrono::steady_clock::now();
+  t.run(threads, [&](std::size_t done, std::size_t total) {
+    if (!tty) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (done != total && now - last < std::chrono::milliseconds(100)) return;
+    last = now;
+    std::fprintf(stderr, "\rtessellating %3zu%% (%zu/%zu faces)", total ? done * 100 / total : 100, done, total);
+    if (done == total) std::fputc('\n', stderr);
+  });
+  std::size_t reported = 0, notOk = 0;
+  for (FaceId f = 0; f < loaded.model->faces().size(); ++f) {
+    const FaceReport r = t.report(f);
+    if (r.status == FaceStatus::kOk) continue;
+    ++notOk;
+    if (++reported <= 20)
+      std::fprintf(stderr, "cetview export: face %u: %s: %s\n", f, faceStatusName(r.status), r.reason.c_str());
+  }
+  if (notOk > 20) std::fprintf(stderr, "cetview export: ... %zu more faces repaired or with a fallback\n", notOk - 20);
+  if (tty) std::fprintf(stderr, "writing %s\n", o.output.c_str());
+  error = exportModel(t, o.output);
+  if (!error.empty()) {
+    std::fprintf(stderr, "cetview export: %s\n", error.c_str());
+    return 1;
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::printf("export: %s: %zu faces, %zu triangles, deflection %g, angle %g -> %s in %.0f ms\n", o.model.c_str(),
+              loaded.model->faces().size(), t.triangleCount(t.lastLevel()), t.chordal(), params.angleDeg,
+              o.output.c_str(), ms);
+  return 0;
+}
+
+}  // namespace
+
+void addExportCommand(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* cmd = app.add_subcommand("export", "Tessellate a model and write the final mesh");
+  cmd->add_option("model", options->model, "STEP, IGES or .brep file, or 'demo'")->required();
+  cmd->add_option("-o,--output", options->output, "Output file: .brep, .glb, .gltf, .obj or .stl")->required();
+  cmd->add_option("--deflection", options->deflection, "Chordal deflection: absolute (0.05) or relative (0.1%)");
+  cmd->add_option("--angle", options->angle, "Angular deflection in degrees");
+  cmd->add_option("--threads", options->threads, "Worker threads (0: all cores)");
+  cmd->callback([options, &exitCode] { exitCode = runExport(*options); });
+}
+
+}  // namespace cetview
