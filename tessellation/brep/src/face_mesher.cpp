@@ -459,8 +459,19 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
   std::vector<gp_Pnt2d> uvs;
-  for (int pass = 0; pass < kMaxPasses; ++pass) {
-    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+  struct LevelEnd {  // every way out of this level but cancellation starts the next level afresh
+    int& passes;
+    bool cancelled = false;
+    ~LevelEnd() {
+      if (!cancelled) passes = 0;
+    }
+  } levelEnd{passesInLevel_};
+  for (; passesInLevel_ < kMaxPasses; ++passesInLevel_) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) {
+      levelEnd.cancelled = true;
+      return false;
+    }
+    const int pass = ++passStamp_;
     const cet::CetMesh& m = cdt_->mesh();
     points_.clear();
     uvs.clear();

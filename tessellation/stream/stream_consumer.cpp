@@ -1,0 +1,131 @@
+#include "stream/stream_consumer.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace cetview::stream {
+
+StreamConsumer::StreamConsumer(ProgressiveStream& stream, std::size_t faceCount)
+    : stream_(stream), faces_(faceCount), control_(stream.controlRing()), showLevel_(stream.targetLevel()) {
+  for (std::size_t i = 0; i < stream.workerRingCount(); ++i) readers_.emplace_back(stream.workerRing(i));
+  held_.resize(stream.workerRingCount());
+  ringLevel_.assign(stream.workerRingCount(), -1);
+}
+
+std::size_t StreamConsumer::poll(std::size_t byteBudget, MeshSink& sink) {
+  std::size_t read = 0;
+  // Level-done records first, so that rings found empty below prove their levels complete.
+  RecordReader::Record r;
+  while (control_.next(r)) {
+    if (r.tag != kLevelDone || r.size < sizeof(LevelDoneHeader)) continue;
+    LevelDoneHeader h;
+    std::memcpy(&h, r.data, sizeof h);
+    levelDone_.push_back(h);
+  }
+  bool progress = true;
+  while (progress && read < byteBudget) {
+    progress = false;
+    for (std::size_t i = 0; i < readers_.size() && read < byteBudget; ++i) {
+      if (!readers_[i].next(r)) continue;
+      progress = true;
+      read += r.size;
+      if (r.tag != kFaceLevel || r.size < sizeof(FaceLevelHeader)) continue;
+      FaceLevelHeader h;
+      std::memcpy(&h, r.data, sizeof h);
+      ringLevel_[i] = static_cast<int>(h.level);
+      if (static_cast<int>(h.level) > showLevel_ || !held_[i].empty()) {
+        held_[i].emplace_back(r.data, r.data + r.size);
+      } else {
+        apply(r.data, r.size, sink);
+      }
+    }
+  }
+  while (!levelDone_.empty() && drainedBelow(static_cast<int>(levelDone_.front().level))) {
+    const LevelDoneHeader& h = levelDone_.front();
+    if (static_cast<int>(h.level) == completeLevel() + 1) {
+      levels_.push_back(LevelStat{static_cast<int>(h.level), h.ms, h.triangles, h.chordal});
+    }
+    levelDone_.pop_front();
+  }
+  return read;
+}
+
+bool StreamConsumer::drainedBelow(int level) {
+  for (std::size_t i = 0; i < readers_.size(); ++i) {
+    if (ringLevel_[i] > level) continue;  // records come level by level in each ring
+    if (stream_.workerRing(i).usedBytes() != 0) return false;
+  }
+  return true;
+}
+
+void StreamConsumer::setShowLevel(int level, MeshSink& sink) {
+  showLevel_ = level;
+  // Held records now allowed, coarsest first so each face's vertices stay in order across rings.
+  for (;;) {
+    std::size_t best = held_.size();
+    std::uint32_t bestLevel = 0;
+    for (std::size_t i = 0; i < held_.size(); ++i) {
+      if (held_[i].empty()) continue;
+      FaceLevelHeader h;
+      std::memcpy(&h, held_[i].front().data(), sizeof h);
+      if (static_cast<int>(h.level) > level) continue;
+      if (best == held_.size() || h.level < bestLevel) best = i, bestLevel = h.level;
+    }
+    if (best == held_.size()) break;
+    apply(held_[best].front().data(), held_[best].front().size(), sink);
+    held_[best].pop_front();
+  }
+  for (std::uint32_t f = 0; f < faces_.size(); ++f) show(f, sink);
+}
+
+void StreamConsumer::apply(const std::uint8_t* data, std::size_t size, MeshSink& sink) {
+  FaceLevelHeader h;
+  std::memcpy(&h, data, sizeof h);
+  const std::size_t need = sizeof h + std::size_t{h.vertexCount} * sizeof(StreamVertex) +
+                           std::size_t{h.indexCount} * sizeof(std::uint32_t);
+  if (h.face >= faces_.size() || size < need || h.firstVertex > faces_[h.face].localCount) return;
+  Face& face = faces_[h.face];
+  // New vertices only: a level published again after a cancellation repeats some.
+  const std::uint32_t skip = face.localCount - h.firstVertex;
+  if (h.vertexCount > skip) {
+    const auto* v = reinterpret_cast<const StreamVertex*>(data + sizeof h) + skip;
+    const std::uint32_t count = h.vertexCount - skip;
+    const std::uint32_t global = sink.appendVertices(v, count);
+    face.segments.push_back(Segment{face.localCount, global});
+    face.localCount += count;
+  }
+  std::vector<std::uint32_t> indices(h.indexCount);
+  std::memcpy(indices.data(), data + sizeof h + std::size_t{h.vertexCount} * sizeof(StreamVertex),
+              indices.size() * sizeof(std::uint32_t));
+  for (std::uint32_t& i : indices) {
+    if (i >= face.localCount) return;  // corrupt record: never index outside the shared array
+    const auto it = std::upper_bound(face.segments.begin(), face.segments.end(), i,
+                                     [](std::uint32_t v, const Segment& s) { return v < s.local; });
+    i = (it - 1)->global + (i - (it - 1)->local);
+  }
+  if (face.levels.size() <= h.level) face.levels.resize(h.level + 1);
+  if (face.shown == static_cast<int>(h.level)) {  // replaced while shown: send it again
+    shownTriangles_ -= face.levels[h.level].size() / 3;
+    face.shown = -1;
+  }
+  face.levels[h.level] = std::move(indices);
+  show(h.face, sink);
+}
+
+void StreamConsumer::show(std::uint32_t f, MeshSink& sink) {
+  Face& face = faces_[f];
+  int want = std::min(showLevel_, static_cast<int>(face.levels.size()) - 1);
+  while (want >= 0 && face.levels[static_cast<std::size_t>(want)].empty()) --want;
+  if (want == face.shown) return;
+  if (face.shown >= 0) shownTriangles_ -= face.levels[static_cast<std::size_t>(face.shown)].size() / 3;
+  face.shown = want;
+  if (want < 0) {
+    sink.setFaceIndices(f, nullptr, 0);
+    return;
+  }
+  const auto& idx = face.levels[static_cast<std::size_t>(want)];
+  shownTriangles_ += idx.size() / 3;
+  sink.setFaceIndices(f, idx.data(), idx.size());
+}
+
+}  // namespace cetview::stream
