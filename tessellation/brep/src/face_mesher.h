@@ -90,7 +90,8 @@ class FaceMesher {
   std::vector<cet::Point2> points_;
   std::vector<cet::VertexId> ids_;
   std::vector<cet::InsertOutcome> outcomes_;
-  std::vector<int> touched_;  // the refinement pass that last split a triangle at this vertex
+  std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
+  int passStamp_ = 0;         // counts passes over all levels
 };
 
 }  // namespace cetview::brep
