@@ -71,6 +71,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   singular_.clear();
   occurrences_.clear();
   cache_.clear();
+  touched_.clear();
   points_.clear();
 
   // Points of each occurrence in increasing parameter: natural UV and 3D.
@@ -383,8 +384,11 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   gp_Vec ref(0, 0, 0);
   for (int i = 0; i < 3; ++i)
     if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
-  if (n.Magnitude() <= 1e-30 * longest * longest || (ref.Magnitude() > 0 && n.Dot(ref) <= 0))
+  if (n.Magnitude() <= 1e-12 * longest * longest) {  // the measure's notion of no area (brep/measure.h)
     r.flags |= TriangleRecord::kFlipped;
+  } else if (ref.Magnitude() > 0) {
+    r.facetCos = static_cast<float>(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()));
+  }
 }
 
 bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const {
@@ -394,8 +398,8 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
   };
   // A boundary chord A -> B (domain on its left) and how far inside it a new point must lie: the
-  // surface under the chord's UV segment bulges away from the 3D chord, within the tangent plane, by
-  // w; where it bulges outwards, a point closer than |w| to the chord would make a flipped triangle.
+  // surface under the chord's UV segment bulges away from the 3D chord, by w within the tangent plane
+  // and by h along the normal; a point closer than that makes a flipped or folded triangle.
   struct Chord {
     gp_Pnt a;
     gp_Vec ab, n;
@@ -417,8 +421,12 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     const std::size_t oa = base_ + a, ob = base_ + b;
     const gp_Pnt under = eval_.point(0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]));
     const gp_Vec inward = c.n.Crossed(c.ab / len);
-    const double w = gp_Vec(c.a.XYZ() + 0.5 * c.ab.XYZ(), under.XYZ()).Dot(inward);
-    c.clearance = (w < 0 ? -1.5 * w : 0.0) + 1e-3 * len;
+    const gp_Vec bulge(c.a.XYZ() + 0.5 * c.ab.XYZ(), under.XYZ());
+    const double w = bulge.Dot(inward), h = std::abs(bulge.Dot(c.n));
+    // Outward in the tangent plane: the point must clear the bulge. Along the normal (a chord of a
+    // curved boundary sags below the surface): the point must be far enough that the facet on the
+    // chord tilts by less than ~40 degrees.
+    c.clearance = (w < 0 ? -1.5 * w : 0.0) + 1.2 * h + 1e-3 * len;
     chords[count++] = c;
   };
   for (int i = 0; i < 3; ++i) {
@@ -458,20 +466,12 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
+  const double foldCos = std::cos(std::min(1.5 * level.angleRad, 80.0 * M_PI / 180.0));
   std::vector<gp_Pnt2d> uvs;
-  struct LevelEnd {  // every way out of this level but cancellation starts the next level afresh
-    int& passes;
-    bool cancelled = false;
-    ~LevelEnd() {
-      if (!cancelled) passes = 0;
-    }
-  } levelEnd{passesInLevel_};
-  for (; passesInLevel_ < kMaxPasses; ++passesInLevel_) {
-    if (cancel && cancel->load(std::memory_order_relaxed)) {
-      levelEnd.cancelled = true;
-      return false;
-    }
-    const int pass = ++passStamp_;
+  if (kDebugRefine) fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+    const int stamp = ++passStamp_;
     const cet::CetMesh& m = cdt_->mesh();
     points_.clear();
     uvs.clear();
@@ -493,14 +493,14 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         at = -1;
       } else if (r->normalAngle > level.angleRad * (1 + 1e-6) && r->longest > minSize) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
-      } else if ((r->flags & TriangleRecord::kFlipped) && r->longest > minSize) {
-        at = 0;
+      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < foldCos) && r->longest > minSize) {
+        at = 0;  // flipped, or folded: the facet turns further from the surface than the corners' spread allows
       }
       if (at < 0) continue;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
       // pass crowd each other and leave slivers that need more points.
       if (touched_.size() < m.vertexCount()) touched_.resize(m.vertexCount(), -1);
-      if ((touched_[m.vertex(t, 0)] == pass || touched_[m.vertex(t, 1)] == pass || touched_[m.vertex(t, 2)] == pass)) {
+      if (touched_[m.vertex(t, 0)] == stamp || touched_[m.vertex(t, 1)] == stamp || touched_[m.vertex(t, 2)] == stamp) {
         continue;
       }
       if (kDebugRefine) { fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
@@ -520,7 +520,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         continue;
       }
       if (kDebugRefine) fprintf(stderr, "  -> split at %.6f %.6f\n", u, v);
-      for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = pass;
+      for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
       points_.push_back(scaled(u, v));
     }
@@ -530,6 +530,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     outcomes_.assign(points_.size(), cet::InsertOutcome::kOutside);
     cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data());
     const auto countAfter = static_cast<cet::VertexId>(cdt_->vertexCount());
+    if (kDebugRefine) {
+      for (std::size_t i = 0; i < ids_.size(); ++i)
+        fprintf(stderr, "  outcome %d for %.6f %.6f\n", static_cast<int>(outcomes_[i]), uvs[i].X(), uvs[i].Y());
+    }
     if (countAfter == countBefore) return true;  // every request merged or rejected: nothing left to gain
     std::vector<std::uint32_t> inputOf(countAfter - countBefore, UINT32_MAX);
     for (std::size_t i = 0; i < ids_.size(); ++i)

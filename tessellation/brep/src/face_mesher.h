@@ -91,11 +91,7 @@ class FaceMesher {
   std::vector<cet::VertexId> ids_;
   std::vector<cet::InsertOutcome> outcomes_;
   std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
-  // Pass stamps are unique over the face's whole life and the pass count of the level in progress
-  // survives a cancellation, so a cancelled level resumes exactly where it stopped and ends in the
-  // same mesh as an uninterrupted run.
-  int passStamp_ = 0;
-  int passesInLevel_ = 0;
+  int passStamp_ = 0;         // counts passes over all levels
 };
 
 }  // namespace cetview::brep

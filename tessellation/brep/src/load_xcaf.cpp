@@ -114,7 +114,7 @@ std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges) {
       }
     }
     std::vector<std::string> assembly;
-    for (int d = 0; d + 1 < it.CurrentDepth(); ++d) assembly.push_back(labelName(it.Current(d).Label));
+    for (int d = 0; d < it.CurrentDepth(); ++d) assembly.push_back(labelName(it.Current(d).Label));  // ancestors
     std::string instanceName = labelName(node.Label);
     if (instanceName.empty()) instanceName = m.parts[part].name;
     gp_Trsf placement = node.Location.Transformation() * shape.Location().Transformation();

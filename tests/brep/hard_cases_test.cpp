@@ -1,0 +1,132 @@
+// Hard cases built with OpenCASCADE's modelling API: poles, apexes, seams, periodic B-splines, many
+// holes, thin faces, tiny edges, a surface of revolution touching its axis.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <GeomAPI_Interpolate.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <TopoDS.hxx>
+#include <gp_Circ.hxx>
+
+#include "test_support.h"
+
+namespace cetview::brep {
+namespace {
+
+void checkAtSeveralDeflections(const TopoDS_Shape& shape, const std::string& name) {
+  auto model = test::loadShape(shape, name);
+  ASSERT_TRUE(model);
+  for (double d : {0.01, 0.001}) {
+    SCOPED_TRACE(name + " at " + std::to_string(d * 100) + "%");
+    test::tessellateAndCheck(*model, test::relative(d));
+  }
+  SCOPED_TRACE(name + " at an absolute deflection");
+  test::tessellateAndCheck(*model, test::absolute(model->bounds().diagonal() * 3e-4), {true, false});
+}
+
+TEST(HardCases, SpherePoles) { checkAtSeveralDeflections(BRepPrimAPI_MakeSphere(10).Shape(), "sphere"); }
+
+TEST(HardCases, ConeApex) {
+  checkAtSeveralDeflections(BRepPrimAPI_MakeCone(5, 0, 10).Shape(), "cone");
+  checkAtSeveralDeflections(BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(1, 1, 0)), 0, 8, 3).Shape(), "cone_flat");
+}
+
+TEST(HardCases, TorusAndCylinderSeams) {
+  checkAtSeveralDeflections(BRepPrimAPI_MakeTorus(10, 3).Shape(), "torus");
+  checkAtSeveralDeflections(BRepPrimAPI_MakeCylinder(5, 20).Shape(), "cylinder");
+  checkAtSeveralDeflections(BRepPrimAPI_MakeCylinder(0.5, 50).Shape(), "long_cylinder");
+}
+
+TEST(HardCases, PeriodicBSpline) {
+  // A wavy tube: periodic in u (8 poles around), open in v (4 rows).
+  const int nu = 8, nv = 4;
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  for (int i = 1; i <= nu; ++i)
+    for (int j = 1; j <= nv; ++j) {
+      const double a = 2 * M_PI * (i - 1) / nu, r = 10 + 2 * std::sin(3 * a + j);
+      poles.SetValue(i, j, gp_Pnt(r * std::cos(a), r * std::sin(a), 8.0 * (j - 1)));
+    }
+  TColStd_Array1OfReal uKnots(1, nu + 1), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, nu + 1), vMults(1, 2);
+  for (int i = 1; i <= nu + 1; ++i) uKnots(i) = i - 1, uMults(i) = 1;
+  vKnots(1) = 0, vKnots(2) = 1, vMults(1) = vMults(2) = 4;
+  Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3, Standard_True, Standard_False);
+  ASSERT_TRUE(surface->IsUPeriodic());
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
+  checkAtSeveralDeflections(face, "periodic_bspline");
+}
+
+TEST(HardCases, PlateWithHundredHoles) {
+  // A 200 x 200 plate, 20 thick, with a 10 x 10 grid of holes: a closed solid.
+  BRepBuilderAPI_MakeFace maker(BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(200, 0, 0), gp_Pnt(200, 200, 0),
+                                                           gp_Pnt(0, 200, 0), Standard_True).Wire(), Standard_True);
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      gp_Circ c(gp_Ax2(gp_Pnt(10 + 20 * i, 10 + 20 * j, 0), gp::DZ()), 3 + 0.5 * ((i + j) % 4));
+      TopoDS_Wire hole = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(c).Edge()).Wire();
+      maker.Add(TopoDS::Wire(hole.Reversed()));
+    }
+  ASSERT_TRUE(maker.IsDone());
+  const TopoDS_Shape solid = BRepPrimAPI_MakePrism(maker.Face(), gp_Vec(0, 0, 20)).Shape();
+  auto model = test::loadShape(solid, "holes");
+  ASSERT_TRUE(model);
+  EXPECT_EQ(model->faces().size(), 2u + 4u + 100u);  // top, bottom, sides, holes
+  EXPECT_TRUE(model->parts()[0].closed);
+  test::tessellateAndCheck(*model, test::relative(0.001));
+  test::tessellateAndCheck(*model, test::relative(0.01));
+}
+
+TEST(HardCases, VeryThinFaces) {
+  // A 100 x 0.01 x 20 slab (faces narrower than the deflection) and a 0.002 rad slice of a cylinder.
+  checkAtSeveralDeflections(BRepPrimAPI_MakeBox(100, 0.01, 20).Shape(), "slab");
+  checkAtSeveralDeflections(BRepPrimAPI_MakeCylinder(50, 10, 0.002).Shape(), "sliver");
+}
+
+TEST(HardCases, TinyEdges) {
+  // A prism over a polygon with a 1e-5 long edge (a kink), next to 10-long ones.
+  BRepBuilderAPI_MakePolygon polygon;
+  for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 10, 0), gp_Pnt(5, 10, 0), gp_Pnt(5 - 1e-5, 10 + 1e-5, 0),
+                          gp_Pnt(0, 10, 0)})
+    polygon.Add(p);
+  polygon.Close();
+  const TopoDS_Face base = BRepBuilderAPI_MakeFace(polygon.Wire(), Standard_True).Face();
+  checkAtSeveralDeflections(BRepPrimAPI_MakePrism(base, gp_Vec(0, 0, 3)).Shape(), "tiny_edge");
+}
+
+TEST(HardCases, RevolutionTouchingItsAxis) {
+  // An egg: a B-spline profile from the axis to the axis, revolved: a pole at each end.
+  Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, 5);
+  pts->SetValue(1, gp_Pnt(0, 0, 0));
+  pts->SetValue(2, gp_Pnt(4, 0, 2));
+  pts->SetValue(3, gp_Pnt(5, 0, 6));
+  pts->SetValue(4, gp_Pnt(3, 0, 11));
+  pts->SetValue(5, gp_Pnt(0, 0, 13));
+  GeomAPI_Interpolate interp(pts, Standard_False, 1e-7);
+  interp.Load(gp_Vec(1, 0, 0), gp_Vec(-1, 0, 0));
+  interp.Perform();
+  ASSERT_TRUE(interp.IsDone());
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(interp.Curve()).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 13), gp_Pnt(0, 0, 0)).Edge());
+  const TopoDS_Face profile = BRepBuilderAPI_MakeFace(wire.Wire(), Standard_True).Face();
+  checkAtSeveralDeflections(BRepPrimAPI_MakeRevol(profile, gp_Ax1(gp_Pnt(0, 0, 0), gp::DZ()), 2 * M_PI).Shape(), "egg");
+}
+
+}  // namespace
+}  // namespace cetview::brep

@@ -1,0 +1,103 @@
+// The progressive API contract: decreasing levels, vertices appended never moved, earlier levels
+// kept, faces advanced from several threads, cancellation.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+#include "test_support.h"
+
+namespace cetview::brep {
+namespace {
+
+std::unique_ptr<Model> demo() {
+  LoadResult r = loadModel("demo");
+  EXPECT_TRUE(r) << r.error;
+  return std::move(r.model);
+}
+
+TEST(Progressive, ScheduleDecreasesToTheRequestedDeflection) {
+  auto m = demo();
+  auto t = Tessellator::create(*m, test::relative(0.0005)).tessellator;
+  ASSERT_TRUE(t);
+  const auto& s = t->schedule();
+  ASSERT_GE(s.size(), 3u);
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    EXPECT_LT(s[k].chordal, s[k - 1].chordal);
+    EXPECT_LE(s[k].angleRad, s[k - 1].angleRad);
+  }
+  EXPECT_DOUBLE_EQ(s.back().chordal, t->chordal());
+  EXPECT_NEAR(t->chordal(), 0.0005 * m->bounds().diagonal(), 1e-12);
+  MeshParams direct = test::relative(0.0005);
+  direct.progressive = false;
+  EXPECT_EQ(Tessellator::create(*m, direct).tessellator->schedule().size(), 1u);
+}
+
+TEST(Progressive, VerticesAreAppendedAndLevelsKept) {
+  auto m = demo();
+  auto t = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(t);
+  const std::size_t faces = m->faces().size();
+  std::vector<FaceMesh> snapshots(faces);
+  for (int k = 0; k <= t->lastLevel(); ++k) {
+    ASSERT_TRUE(t->discretiseEdges(k));
+    for (FaceId f = 0; f < faces; ++f) {
+      const FaceStatus s = t->advanceFace(f, k);
+      ASSERT_EQ(s, FaceStatus::kOk) << t->report(f).reason;
+      ASSERT_EQ(t->faceLevel(f), k);
+      const FaceMesh& now = t->faceMesh(f);
+      const FaceMesh& before = snapshots[f];
+      ASSERT_EQ(now.levels.size(), static_cast<std::size_t>(k + 1));
+      // Appended, never moved: the previous arrays are a prefix of the new ones.
+      ASSERT_GE(now.positions.size(), before.positions.size());
+      EXPECT_TRUE(std::equal(before.positions.begin(), before.positions.end(), now.positions.begin()));
+      EXPECT_TRUE(std::equal(before.normals.begin(), before.normals.end(), now.normals.begin()));
+      EXPECT_TRUE(std::equal(before.uv.begin(), before.uv.end(), now.uv.begin()));
+      for (int j = 0; j < k; ++j) EXPECT_EQ(now.levels[static_cast<std::size_t>(j)], before.levels[static_cast<std::size_t>(j)]);
+      EXPECT_EQ(now.levelVertexEnd.back(), now.vertexCount());
+      for (std::uint32_t i : now.levels.back()) ASSERT_LT(i, now.vertexCount());
+      snapshots[f] = now;
+    }
+  }
+}
+
+TEST(Progressive, ThreadsGiveTheSameMesh) {
+  auto m = demo();
+  auto one = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  auto four = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(one->run(1));
+  ASSERT_TRUE(four->run(4));
+  for (FaceId f = 0; f < m->faces().size(); ++f) {
+    EXPECT_EQ(one->faceMesh(f).levels, four->faceMesh(f).levels) << "face " << f;
+    EXPECT_EQ(one->faceMesh(f).positions, four->faceMesh(f).positions) << "face " << f;
+  }
+}
+
+TEST(Progressive, CancellationStopsTheRun) {
+  auto m = demo();
+  auto t = Tessellator::create(*m, test::relative(0.0001)).tessellator;
+  std::atomic<bool> cancel{true};
+  EXPECT_FALSE(t->run(2, {}, &cancel));
+  std::size_t completed = 0;
+  for (FaceId f = 0; f < m->faces().size(); ++f) completed += t->faceLevel(f) == t->lastLevel();
+  EXPECT_EQ(completed, 0u);
+  // A cancelled face resumes where it stopped.
+  cancel = false;
+  EXPECT_TRUE(t->run(2, {}, &cancel));
+  for (FaceId f = 0; f < m->faces().size(); ++f) EXPECT_EQ(t->faceLevel(f), t->lastLevel());
+}
+
+TEST(Progressive, ProgressReachesTheTotal) {
+  auto m = demo();
+  auto t = Tessellator::create(*m, test::relative(0.01)).tessellator;
+  std::size_t lastDone = 0, lastTotal = 0;
+  ASSERT_TRUE(t->run(2, [&](std::size_t done, std::size_t total) {
+    EXPECT_GE(done, lastDone);
+    lastDone = done, lastTotal = total;
+  }));
+  EXPECT_EQ(lastDone, lastTotal);
+  EXPECT_EQ(lastTotal, m->faces().size());
+}
+
+}  // namespace
+}  // namespace cetview::brep

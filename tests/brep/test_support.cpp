@@ -1,0 +1,77 @@
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <BRepTools.hxx>
+
+#include "brep/measure.h"
+#include "brep/mesh_check.h"
+
+namespace cetview::brep::test {
+
+std::string tempPath(const std::string& name) {
+  const char* dir = std::getenv("TMPDIR");
+  return std::string(dir ? dir : "/tmp") + "/cetview_brep_" + std::to_string(::getpid()) + "_" + name;
+}
+
+std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name) {
+  const std::string path = tempPath(name + ".brep");
+  EXPECT_TRUE(BRepTools::Write(shape, path.c_str()));
+  LoadResult r = loadModel(path);
+  EXPECT_TRUE(r) << r.error;
+  ::unlink(path.c_str());
+  return std::move(r.model);
+}
+
+MeshParams relative(double fraction, double angleDeg) {
+  MeshParams p;
+  p.chordal = {fraction, true};
+  p.angleDeg = angleDeg;
+  return p;
+}
+
+MeshParams absolute(double value, double angleDeg) {
+  MeshParams p;
+  p.chordal = {value, false};
+  p.angleDeg = angleDeg;
+  return p;
+}
+
+std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshParams& params, const CheckOptions& options) {
+  auto created = Tessellator::create(model, params);
+  EXPECT_TRUE(created.tessellator) << created.error;
+  if (!created.tessellator) return nullptr;
+  Tessellator& t = *created.tessellator;
+  EXPECT_TRUE(t.run(2));
+  const double diagonal = model.bounds().diagonal();
+  const int first = options.everyLevel ? 0 : t.lastLevel();
+  for (int k = first; k <= t.lastLevel(); ++k) {
+    const double tolerance = t.schedule()[static_cast<std::size_t>(k)].chordal;
+    const std::vector<FaceQuality> quality = measureFaces(t, k, 2);
+    for (FaceId f = 0; f < quality.size(); ++f) {
+      const FaceQuality& q = quality[f];
+      const char* kind = surfaceKindName(model.faces()[f].kind);
+      EXPECT_GT(q.triangles, 0u) << "level " << k << ": face " << f << " (" << kind << ") has no triangle: "
+                                 << t.report(f).reason;
+      EXPECT_LE(q.maxDeviation, tolerance) << "level " << k << ": face " << f << " (" << kind << ") deviates "
+                                           << q.maxDeviation / tolerance << "x the tolerance " << tolerance;
+      EXPECT_EQ(q.degenerate, 0u) << "level " << k << ": face " << f << " (" << kind << ")";
+      EXPECT_EQ(q.flipped, 0u) << "level " << k << ": face " << f << " (" << kind << ")";
+    }
+    for (PartId p = 0; p < model.parts().size(); ++p) {
+      if (!model.parts()[p].closed) continue;
+      const TriangleSoup soup = partSoup(t, p, k);
+      EXPECT_EQ(countOpenEdges(soup, 1e-9 * diagonal), 0u) << "level " << k << ": part " << p << " is not watertight";
+      if (options.selfIntersection && k == t.lastLevel()) {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+        EXPECT_EQ(countSelfIntersections(soup, 1e-9 * diagonal, 1e-9 * diagonal, &pairs), 0u)
+            << "part " << p << ": first pair between faces " << (pairs.empty() ? 0 : soup.faceOf[pairs[0].first])
+            << " and " << (pairs.empty() ? 0 : soup.faceOf[pairs[0].second]);
+      }
+    }
+  }
+  return std::move(created.tessellator);
+}
+
+}  // namespace cetview::brep::test

@@ -1,0 +1,35 @@
+// Helpers for the brep tests: shapes written to temporary files (the library loads files), and the
+// property checks every tessellation must pass.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+
+#include "brep/model.h"
+#include "brep/tessellator.h"
+
+namespace cetview::brep::test {
+
+// A fresh path in the test's temporary directory (removed by the OS, not by us).
+std::string tempPath(const std::string& name);
+// Writes shape to a temporary .brep and loads it; fails the test on a load error.
+std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name);
+
+struct CheckOptions {
+  bool selfIntersection = true;  // bucketed triangle-triangle test of every closed part
+  bool everyLevel = true;        // check each level against its own tolerance, not only the final one
+};
+
+// Tessellates `model` with params and asserts the promise, level by level (gtest failures name the
+// face): every face has triangles; the measured deviation of each face is within the level's
+// chordal tolerance; closed parts have no open edge; no degenerate or flipped triangle; no self-
+// intersection. Returns the tessellator for further checks.
+std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshParams& params,
+                                                const CheckOptions& options = {});
+
+MeshParams relative(double fraction, double angleDeg = 20);
+MeshParams absolute(double value, double angleDeg = 20);
+
+}  // namespace cetview::brep::test
