@@ -1,0 +1,162 @@
+// The renderer: owns a Scene and its GPU copy, the upload ring, the pipelines and the frame loop,
+// drawing either into a window's swapchain or into an offscreen image that capture() reads back.
+// Both targets use the same render pass shape and the same pipelines.
+//
+// Frame loop: each drawFrame() waits only for the frame `framesInFlight` frames ago, uploads up to
+// `uploadBudgetBytes` of the Scene's changes (the rest waits for later frames; a face keeps showing
+// its previous triangles until its new ones are complete), records background, faces and edges,
+// and submits (and presents, in a window). Not thread-safe: one thread drives a Renderer.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "engine/attachments.h"
+#include "engine/camera.h"
+#include "engine/context.h"
+#include "engine/gpu_scene.h"
+#include "engine/image.h"
+#include "engine/pipelines.h"
+#include "engine/resources.h"
+#include "engine/result.h"
+#include "engine/scene.h"
+#include "engine/swapchain.h"
+#include "engine/types.h"
+#include "engine/upload_ring.h"
+
+namespace cetview::engine {
+
+struct RendererOptions {
+  std::uint32_t msaaSamples = 4;                 // clamped to what the device supports; 1 disables MSAA
+  std::uint64_t uploadBudgetBytes = 16u << 20;   // per frame; bigger changes spread over frames
+  std::uint32_t framesInFlight = 2;              // 1..4
+  bool vsync = true;                             // window: FIFO; false: MAILBOX/IMMEDIATE when offered
+  GpuSceneOptions scene;                         // initial buffer sizes, indirect draws
+};
+
+// The look of a frame: display mode, colour toggles, palette (sRGB colours).
+struct ViewStyle {
+  DisplayMode mode = DisplayMode::kShadedWithEdges;
+  bool fileColors = true;  // false: every face in defaultFaceColor (instance colours too)
+  Color8 defaultFaceColor = kDefaultFaceColor;
+  Color8 edgeColor{28, 30, 36, 255};
+  Color8 backgroundTop{222, 228, 236, 255};
+  Color8 backgroundBottom{150, 160, 176, 255};
+};
+
+enum class FrameStatus {
+  kRendered,
+  kSkipped,  // window minimised (0x0), or the swapchain was out of date and is recreated next frame
+};
+
+class Renderer {
+ public:
+  // Reports the window's framebuffer size in pixels (0x0 while minimised); called every frame.
+  using FramebufferSizeFn = std::function<VkExtent2D()>;
+
+  // Offscreen rendering into a `extent`-sized image; capture() reads frames back.
+  // Errors: kInvalidArgument (zero extent), kUnsupported (no usable colour/depth format), kVulkan...
+  static Result<std::unique_ptr<Renderer>> createHeadless(const Device& device, VkExtent2D extent,
+                                                          const RendererOptions& options = {});
+  // Rendering into `surface` (owned by the caller; keep it alive until the Renderer is gone). The
+  // Device must have been created with this surface as DeviceOptions::presentSurface.
+  // Errors: kMissingExtension (no VK_KHR_swapchain), kUnsupported, kVulkan...
+  static Result<std::unique_ptr<Renderer>> createWindowed(const Device& device, VkSurfaceKHR surface,
+                                                          FramebufferSizeFn framebufferSize,
+                                                          const RendererOptions& options = {});
+  // Waits for the device to finish, then frees everything.
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  Scene& scene() { return scene_; }
+  const Scene& scene() const { return scene_; }
+
+  // Uploads (within the budget) and draws one frame. Errors: kUnsupported (wireframe without
+  // fillModeNonSolid), kDeviceLost, kSurfaceLost, kOutOfMemory, kVulkan.
+  Result<FrameStatus> drawFrame(const Camera& camera, const ViewStyle& style = {});
+
+  // Headless only: draws one frame and returns its pixels (waits for it). Call finishUploads()
+  // first for a picture of the whole scene. Errors: kInvalidArgument for a windowed renderer.
+  Result<RgbaImage> capture(const Camera& camera, const ViewStyle& style = {});
+
+  // Submits upload-only frames (same budget each) until the Scene has nothing pending, then waits.
+  Status finishUploads();
+
+  Status waitIdle();
+
+  bool headless() const { return surface_ == VK_NULL_HANDLE; }
+  VkExtent2D extent() const { return extent_; }  // of the last frame's target (window: swapchain)
+  float aspect() const;
+  VkSampleCountFlagBits samples() const { return format_.samples; }
+  VkFormat colorFormat() const { return format_.color; }
+  const UploadStats& lastUploadStats() const { return lastUpload_; }
+  std::uint32_t swapchainRecreations() const { return recreations_; }
+  const Device& device() const { return device_; }
+
+ private:
+  struct Frame {
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+    VkSemaphore acquired = VK_NULL_HANDLE;  // window: the swapchain image is ready
+    Buffer globals;                          // gpu::Globals, host-visible
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    VkBuffer boundFaces = VK_NULL_HANDLE;      // storage buffers the set points at
+    VkBuffer boundInstances = VK_NULL_HANDLE;
+    std::uint64_t serial = 0;    // of the last submission that used this frame
+    std::uint64_t ringMark = 0;  // upload ring position after that submission
+  };
+
+  Renderer(const Device& device, const RendererOptions& options);
+  Status createCommon();
+  Status createFrames();
+  Status createHeadlessTarget(VkExtent2D extent);
+  // Window: makes the swapchain match the framebuffer; false while minimised.
+  Result<bool> prepareSwapchain();
+  Status recreateSwapchain(VkExtent2D framebuffer, bool* minimised);
+  void destroySwapchainResources();
+  Status waitForFrame(Frame& frame);
+  // One frame: with `camera` null, uploads only; with `capture`, also copies the image to readback_.
+  Result<FrameStatus> runFrame(const Camera* camera, const ViewStyle* style, bool capture);
+  void writeGlobals(Frame& frame, const Camera& camera, const ViewStyle& style);
+  void updateDescriptors(Frame& frame);
+  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const ViewStyle& style);
+
+  const Device& device_;
+  RendererOptions options_;
+  Scene scene_;
+  std::unique_ptr<GpuScene> gpuScene_;
+  UploadRing ring_;
+  TargetFormat format_;
+  Pipelines pipelines_;
+  Attachments attachments_;
+  VkExtent2D extent_{0, 0};
+  VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
+  std::vector<Frame> frames_;
+  std::uint64_t frameIndex_ = 0;
+  std::uint64_t serial_ = 0;
+  std::deque<std::pair<std::uint64_t, Buffer>> retired_;  // (serial of the last frame using it, buffer)
+  UploadStats lastUpload_;
+
+  // Headless target.
+  Image offscreen_;
+  Buffer readback_;
+
+  // Window target.
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+  FramebufferSizeFn framebufferSize_;
+  Swapchain swapchain_;
+  VkExtent2D swapchainFramebuffer_{0, 0};  // framebufferSize_() when the swapchain was made
+  std::vector<VkSemaphore> renderDone_;    // one per swapchain image
+  bool needRecreate_ = true;
+  std::uint32_t recreations_ = 0;
+};
+
+}  // namespace cetview::engine

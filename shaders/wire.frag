@@ -1,0 +1,16 @@
+#version 450
+// Wireframe of the triangle edges (polygon mode LINE): the face colour, a little darker so thin
+// lines stay readable on the light background.
+#extension GL_GOOGLE_include_directive : require
+#include "shared.h"
+#include "common.glsl"
+
+layout(location = 0) in vec3 inViewPosition;
+layout(location = 1) in vec3 inViewNormal;
+layout(location = 2) flat in vec4 inColor;
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+  outColor = toTarget(inColor.rgb * 0.6);
+}
