@@ -286,7 +286,9 @@ Result<Device> createDevice(const Instance& instance, const DeviceOptions& optio
   auto extensions = deviceExtensions(result.physicalDevice);
   CETVIEW_TRY(extensions);
   std::vector<const char*> enabledExtensions;
-  result.swapchainExtension = contains(*extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  // Only with a surface: VK_KHR_swapchain needs the instance's VK_KHR_surface, which headless
+  // instances do not enable.
+  result.swapchainExtension = needPresent && contains(*extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   if (result.swapchainExtension) enabledExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
   float priority = 1.0f;

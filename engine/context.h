@@ -77,7 +77,7 @@ struct Device {
   VkPhysicalDeviceProperties properties{};
   VkPhysicalDeviceMemoryProperties memory{};
   DeviceFeatures features;
-  bool swapchainExtension = false;  // VK_KHR_swapchain enabled
+  bool swapchainExtension = false;  // VK_KHR_swapchain enabled (only with DeviceOptions::presentSurface)
   ValidationLog* log = nullptr;     // the instance's log; not owned
 };
 
