@@ -1,5 +1,7 @@
 #include "engine/render_to_png.h"
 
+#include <string>
+
 #include "engine/context.h"
 
 namespace cetview::engine {
@@ -64,7 +66,14 @@ Result<RgbaImage> renderMesh(const MeshData& mesh, const RenderOptions& options)
   CETVIEW_TRY(addMesh(r.scene(), mesh));
   CETVIEW_TRY(r.finishUploads());
   Camera camera = standardView(options.view, r.scene().bounds(), r.aspect(), options.projection);
-  return r.capture(camera, options.style);
+  auto image = r.capture(camera, options.style);
+  CETVIEW_TRY(image);
+  if (options.validation && session.instance.log->count() > 0) {
+    return makeError(ErrorCode::kVulkan, "the validation layer reported " +
+                                             std::to_string(session.instance.log->count()) +
+                                             " problem(s), printed above");
+  }
+  return image;
 }
 
 Status renderMeshToPng(const MeshData& mesh, const RenderOptions& options, const std::string& path) {

@@ -40,7 +40,7 @@ struct RenderOptions {
   Projection projection = Projection::kPerspective;
   ViewStyle style;
   std::string deviceName;  // substring of the device name; empty: best device (lavapipe last)
-  bool validation = false;  // VK_LAYER_KHRONOS_validation; a missing layer is an error
+  bool validation = false;  // VK_LAYER_KHRONOS_validation; a missing layer or any report is an error
   std::uint32_t msaaSamples = 4;
 };
 

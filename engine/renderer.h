@@ -97,6 +97,9 @@ class Renderer {
   VkSampleCountFlagBits samples() const { return format_.samples; }
   VkFormat colorFormat() const { return format_.color; }
   const UploadStats& lastUploadStats() const { return lastUpload_; }
+  // Triangles the GPU draws per instance of every part (whole faces only: a face being replaced
+  // counts its previous array until the new one is complete).
+  std::uint64_t committedTriangles() const { return gpuScene_->committedTriangles(); }
   std::uint32_t swapchainRecreations() const { return recreations_; }
   const Device& device() const { return device_; }
 

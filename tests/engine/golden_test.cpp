@@ -86,6 +86,19 @@ TEST_F(GoldenTest, InstancesWithTransformsAndColorOverride) {
   expectMatchesGolden(*image, "instances");
 }
 
+TEST_F(GoldenTest, CubeWithoutMsaa) {
+  RendererOptions noMsaa;
+  noMsaa.msaaSamples = 1;
+  Renderer* r = makeHeadless(kSize, kSize, noMsaa);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->samples(), VK_SAMPLE_COUNT_1_BIT);
+  ASSERT_TRUE(addMesh(r->scene(), cube()).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  auto image = r->capture(standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  expectMatchesGolden(*image, "cube_no_msaa");
+}
+
 TEST_F(GoldenTest, FileColorsOffUsesTheDefaultColor) {
   ViewStyle style;
   style.fileColors = false;
