@@ -5,6 +5,8 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -18,6 +20,10 @@ class VulkanTest : public ::testing::Test {
   void SetUp() override;
   void TearDown() override;
 
+  // Window tests: called between instance and device creation; the surface (if any) is destroyed
+  // after the device. Instance extensions it needs go in instanceExtensions_ before SetUp().
+  virtual VkSurfaceKHR createSurface() { return VK_NULL_HANDLE; }
+
   // A headless renderer on device_, released before the device in TearDown(); null (and the test
   // failed) when it cannot be created.
   engine::Renderer* makeHeadless(std::uint32_t width, std::uint32_t height, engine::RendererOptions options = {});
@@ -25,6 +31,8 @@ class VulkanTest : public ::testing::Test {
   engine::Instance instance_;
   engine::Device device_;
   std::unique_ptr<engine::Renderer> renderer_;
+  std::vector<std::string> instanceExtensions_;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   bool synchronizationValidation_ = true;  // subclasses may turn the (slow) sync checks off
 };
 
