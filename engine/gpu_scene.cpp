@@ -16,15 +16,6 @@ constexpr VkDeviceSize kEdgeDrawSize = sizeof(VkDrawIndirectCommand);
 constexpr VkDeviceSize kEdgePointSize = 3 * sizeof(float);
 constexpr VkDeviceSize kMinTableEntries = 256;
 
-// Linear-light RGBA from an sRGB colour (the shaders light in linear space).
-glm::vec4 linearColor(Color8 c) {
-  auto channel = [](std::uint8_t v) {
-    float x = static_cast<float>(v) / 255.0f;
-    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-  };
-  return glm::vec4(channel(c.r), channel(c.g), channel(c.b), static_cast<float>(c.a) / 255.0f);
-}
-
 }  // namespace
 
 GpuScene::GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options)
@@ -48,7 +39,6 @@ Status GpuScene::init() {
   buffers_[kFaceDraws].usage = copy | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
   buffers_[kFaceColors].usage = copy | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   buffers_[kEdgeDraws].usage = copy | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
-  buffers_[kInstances].usage = copy | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   const VkDeviceSize initial[kTargetCount] = {
       std::max<VkDeviceSize>(options_.initialVertexCapacity, 64) * sizeof(MeshVertex),
       std::max<VkDeviceSize>(options_.initialIndexCapacity, 192) * sizeof(std::uint32_t),
@@ -56,7 +46,6 @@ Status GpuScene::init() {
       kMinTableEntries * kFaceDrawSize,
       kMinTableEntries * sizeof(std::uint32_t),
       kMinTableEntries * kEdgeDrawSize,
-      kMinTableEntries * sizeof(InstanceData),
   };
   for (int t = 0; t < kTargetCount; ++t) {
     auto buffer = createBuffer(device_, initial[t], buffers_[t].usage, MemoryUse::kDeviceLocal);
@@ -78,7 +67,6 @@ void GpuScene::reset() {
   edgeSlots_ = RangeAllocator(edgeSlots_.capacity());
   faces_.clear();
   edges_.clear();
-  instanceReady_.clear();
   committedIndices_ = 0;
   generation_ = scene_.generation_;
 }
@@ -125,12 +113,6 @@ Status GpuScene::growTables() {
     CETVIEW_TRY(reserve(kEdgeDraws, sceneEdges * kEdgeDrawSize, edgeCount * kEdgeDrawSize));
     fills_.push_back(Fill{kEdgeDraws, edgeCount * kEdgeDrawSize, (sceneEdges - edgeCount) * kEdgeDrawSize, 0u});
     edges_.resize(sceneEdges);
-  }
-  std::uint32_t sceneInstances = scene_.instanceCount();
-  if (sceneInstances > instanceReady_.size()) {
-    CETVIEW_TRY(reserve(kInstances, sceneInstances * sizeof(InstanceData),
-                        instanceReady_.size() * sizeof(InstanceData)));
-    instanceReady_.resize(sceneInstances, false);
   }
   return {};
 }
@@ -190,21 +172,6 @@ bool GpuScene::writeFaceDraw(std::uint32_t face, const Piece* data) {
   }
   scene_.faceDrawsDirty_.unmark(face);
   return true;
-}
-
-void GpuScene::uploadInstances() {
-  std::uint32_t id = 0;
-  while (scene_.instancesDirty_.front(&id)) {
-    const Scene::Instance& instance = scene_.instances_[id];
-    InstanceData data{};
-    data.model = instance.transform;
-    data.normalMatrix = glm::transpose(glm::inverse(instance.transform));
-    data.color = instance.color ? linearColor(*instance.color) : glm::vec4(0.0f);
-    data.flags = glm::uvec4(instance.color ? CETVIEW_INSTANCE_COLOR_OVERRIDE : 0u, 0u, 0u, 0u);
-    if (!stage(kInstances, id * sizeof(InstanceData), &data, sizeof(data))) return;
-    instanceReady_[id] = true;
-    scene_.instancesDirty_.popFront();
-  }
 }
 
 void GpuScene::uploadFaceColors() {
@@ -410,7 +377,6 @@ Status GpuScene::recordUploads(VkCommandBuffer cmd, UploadRing& ring, std::uint6
 
   Status status = growTables();
   // Small, interactive changes first so toggles stay responsive while geometry streams in.
-  if (status) uploadInstances();
   if (status) uploadFaceColors();
   if (status) uploadFaceVisibility();
   if (status) status = uploadVertices();
@@ -464,22 +430,31 @@ void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
   fills_.clear();
 }
 
-void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, std::uint32_t pass) const {
+void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
+                               VkPipeline twoSided, VkPipeline culled) const {
   if (committedIndices_ == 0) return;
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kVertices].buffer.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, buffers_[kIndices].buffer.buffer, 0, VK_INDEX_TYPE_UINT32);
   std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
-  for (std::uint32_t i = 0; i < scene_.instanceCount(); ++i) {
-    const Scene::Instance& instance = scene_.instances_[i];
-    if (!instance.visible || i >= instanceReady_.size() || !instanceReady_[i]) continue;
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (const Scene::Instance& instance : scene_.instances_) {
+    if (!instance.visible) continue;
     const Scene::Part& part = scene_.parts_[instance.part];
-    DrawConstants constants{i, pass, 0u, 0u};
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(constants), &constants);
     // Only faces this GpuScene already knows (tables grow at the start of each upload).
     std::uint32_t end = std::min<std::uint32_t>(part.firstFace + part.faceCount,
                                                 static_cast<std::uint32_t>(faces_.size()));
+    if (part.firstFace >= end) continue;
+    // A mirroring transform turns counter-clockwise triangles clockwise: no culling then.
+    bool cull = part.closedSolid && glm::determinant(glm::mat3(instance.transform)) > 0.0f;
+    VkPipeline pipeline = cull ? culled : twoSided;
+    if (pipeline != bound) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+      bound = pipeline;
+    }
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(constants), &constants);
     if (indirect_) {
       for (std::uint32_t first = part.firstFace; first < end; first += maxDraws) {
         std::uint32_t count = std::min(end - first, maxDraws);
@@ -496,19 +471,19 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, std
   }
 }
 
-void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout) const {
+void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const {
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kEdgePoints].buffer.buffer, &zero);
   std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
-  for (std::uint32_t i = 0; i < scene_.instanceCount(); ++i) {
-    const Scene::Instance& instance = scene_.instances_[i];
-    if (!instance.visible || i >= instanceReady_.size() || !instanceReady_[i]) continue;
+  for (const Scene::Instance& instance : scene_.instances_) {
+    if (!instance.visible) continue;
     const Scene::Part& part = scene_.parts_[instance.part];
-    DrawConstants constants{i, CETVIEW_PASS_EDGES, 0u, 0u};
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(constants), &constants);
     std::uint32_t end = std::min<std::uint32_t>(part.firstEdge + part.edgeCount,
                                                 static_cast<std::uint32_t>(edges_.size()));
+    if (part.firstEdge >= end) continue;
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(constants), &constants);
     if (indirect_) {
       for (std::uint32_t first = part.firstEdge; first < end; first += maxDraws) {
         std::uint32_t count = std::min(end - first, maxDraws);

@@ -7,7 +7,7 @@
 //   faceDraws   VkDrawIndexedIndirectCommand per face, firstInstance = face id
 //   faceColors  packed sRGB RGBA8 per face (storage buffer, indexed by gl_InstanceIndex)
 //   edgeDraws   VkDrawIndirectCommand per edge
-//   instances   gpu::InstanceData per instance (storage buffer)
+// Instances are not uploaded: each draw's push constants carry its transform (draw_constants.h).
 //
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
@@ -25,6 +25,7 @@
 #include <vulkan/vulkan.h>
 
 #include "engine/context.h"
+#include "engine/draw_constants.h"
 #include "engine/range_allocator.h"
 #include "engine/resources.h"
 #include "engine/scene.h"
@@ -65,20 +66,21 @@ class GpuScene {
   Status recordUploads(VkCommandBuffer cmd, UploadRing& ring, std::uint64_t budget,
                        std::vector<Buffer>& retired, UploadStats* stats);
 
-  // Inside a render pass with a face pipeline (mesh.vert) bound: every visible face of every
-  // visible, uploaded instance. `pass` goes to DrawConstants::pass.
-  void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, std::uint32_t pass) const;
+  // Inside a render pass: every visible face of every visible instance, with `culled` for
+  // instances of closed solids that are not mirrored and `twoSided` for the rest (both mesh.vert
+  // pipelines; they may be the same). Binds the pipelines itself.
+  void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view, VkPipeline twoSided,
+                       VkPipeline culled) const;
   // Inside a render pass with the edge pipeline bound: every edge of every visible instance.
-  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout) const;
+  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const;
 
   VkBuffer faceColorBuffer() const { return buffers_[kFaceColors].buffer.buffer; }
-  VkBuffer instanceBuffer() const { return buffers_[kInstances].buffer.buffer; }
   bool usesIndirectDraws() const { return indirect_; }
   std::uint64_t committedTriangles() const { return committedIndices_ / 3; }  // per instance of each part
   std::uint32_t uploadedVertices() const { return scene_.uploadedVertices_; }
 
  private:
-  enum Target { kVertices, kIndices, kEdgePoints, kFaceDraws, kFaceColors, kEdgeDraws, kInstances, kTargetCount };
+  enum Target { kVertices, kIndices, kEdgePoints, kFaceDraws, kFaceColors, kEdgeDraws, kTargetCount };
 
   struct Growable {
     Buffer buffer;
@@ -137,7 +139,6 @@ class GpuScene {
   Status uploadVertices();
   Status uploadFaces();
   Status uploadEdges();
-  void uploadInstances();
   void uploadFaceColors();
   void uploadFaceVisibility();
   void emit(VkCommandBuffer cmd, std::vector<Buffer>& retired);
@@ -152,7 +153,6 @@ class GpuScene {
   RangeAllocator edgeSlots_;
   std::vector<FaceSlot> faces_;
   std::vector<EdgeSlot> edges_;
-  std::vector<bool> instanceReady_;  // InstanceData uploaded at least once
   std::uint64_t committedIndices_ = 0;
 
   // Per-frame recording state.

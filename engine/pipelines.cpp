@@ -105,6 +105,7 @@ struct PipelineDesc {
   bool depthTest;
   bool depthWrite;
   bool depthBias;  // pushes faces back so lines on them win the depth test
+  bool cullBack = false;
 };
 
 Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, const TargetFormat& format,
@@ -157,7 +158,9 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
 
   auto raster = vkInit<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
   raster.polygonMode = desc.polygonMode;
-  raster.cullMode = VK_CULL_MODE_NONE;  // CAD faces have no reliable winding; lighting is two-sided
+  // CAD faces have no reliable winding in general; lighting is two-sided. Closed solids promise
+  // counter-clockwise outsides (Scene::addPart) and drop their back faces early.
+  raster.cullMode = desc.cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
   raster.depthBiasEnable = desc.depthBias ? VK_TRUE : VK_FALSE;
@@ -212,10 +215,9 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
   p.renderPass = *renderPass;
 
   constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-  std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
+  std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
   bindings[0] = {CETVIEW_BINDING_GLOBALS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kStages, nullptr};
   bindings[1] = {CETVIEW_BINDING_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr};
-  bindings[2] = {CETVIEW_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr};
   auto setInfo = vkInit<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
   setInfo.pBindings = bindings.data();
@@ -241,6 +243,12 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
                                 VK_POLYGON_MODE_FILL, true, true, true});
   CETVIEW_TRY(shaded);
   p.shaded = *shaded;
+  PipelineDesc culledDesc{ShaderId::kMeshVert, ShaderId::kMeshFrag, Input::kMesh, kTriangles,
+                          VK_POLYGON_MODE_FILL, true, true, true};
+  culledDesc.cullBack = true;
+  auto shadedCulled = createPipeline(device, p, format, culledDesc);
+  CETVIEW_TRY(shadedCulled);
+  p.shadedCulled = *shadedCulled;
   if (device.features.fillModeNonSolid) {
     auto wireframe = createPipeline(device, p, format,
                                     {ShaderId::kMeshVert, ShaderId::kWireFrag, Input::kMesh, kTriangles,
@@ -269,7 +277,7 @@ Result<Pipelines> createPipelines(const Device& device, const TargetFormat& form
 }
 
 void destroyPipelines(const Device& device, Pipelines& p) {
-  for (VkPipeline pipeline : {p.background, p.shaded, p.wireframe, p.edges}) {
+  for (VkPipeline pipeline : {p.background, p.shaded, p.shadedCulled, p.wireframe, p.edges}) {
     if (pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.device, pipeline, nullptr);
   }
   if (p.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.device, p.layout, nullptr);

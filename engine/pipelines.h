@@ -1,6 +1,7 @@
-// The render pass and the four pipelines every target (window or offscreen) draws with: background
-// gradient, shaded faces, wireframe (triangle edges) and B-rep edge lines. They share one pipeline
-// layout: descriptor set 0 (globals, face colours, instances) and DrawConstants push constants.
+// The render pass and the pipelines every target (window or offscreen) draws with: background
+// gradient, shaded faces (two-sided, and culled for closed solids), wireframe (triangle edges) and
+// B-rep edge lines. They share one pipeline layout: descriptor set 0 (globals, face colours) and
+// DrawConstants push constants.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -24,7 +25,8 @@ struct Pipelines {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline background = VK_NULL_HANDLE;
-  VkPipeline shaded = VK_NULL_HANDLE;
+  VkPipeline shaded = VK_NULL_HANDLE;        // two-sided
+  VkPipeline shadedCulled = VK_NULL_HANDLE;  // back faces culled: closed solids only
   VkPipeline wireframe = VK_NULL_HANDLE;  // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
   VkPipeline edges = VK_NULL_HANDLE;
 };

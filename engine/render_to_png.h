@@ -27,6 +27,7 @@ struct MeshData {
   std::vector<MeshVertex> vertices;
   std::vector<MeshFace> faces;
   std::vector<std::vector<glm::vec3>> edges;  // B-rep edges as polylines
+  bool closedSolid = false;                    // see Scene::addPart()
 };
 
 // Adds `mesh` to `scene` as one part with one identity instance; face i is range.face(i).

@@ -4,21 +4,11 @@
 #include <cmath>
 #include <cstring>
 
-#include <glm/geometric.hpp>
-
 #include "engine/gpu_structs.h"
 #include "engine/vk_check.h"
 
 namespace cetview::engine {
 namespace {
-
-glm::vec4 linear(Color8 c) {
-  auto channel = [](std::uint8_t v) {
-    float x = static_cast<float>(v) / 255.0f;
-    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-  };
-  return glm::vec4(channel(c.r), channel(c.g), channel(c.b), static_cast<float>(c.a) / 255.0f);
-}
 
 // A colour format for the offscreen image that can be rendered to and copied from: sRGB first, so
 // headless frames match the window's, then UNORM (the shaders encode sRGB themselves).
@@ -40,7 +30,10 @@ bool isBgr(VkFormat format) { return format == VK_FORMAT_B8G8R8A8_SRGB || format
 
 Renderer::Renderer(const Device& device, const RendererOptions& options) : device_(device), options_(options) {
   options_.framesInFlight = std::clamp<std::uint32_t>(options_.framesInFlight, 1, 4);
-  options_.uploadBudgetBytes = std::max<std::uint64_t>(options_.uploadBudgetBytes, 64u << 10);
+  options_.uploadBudgetBytes = std::clamp<std::uint64_t>(options_.uploadBudgetBytes, 64u << 10, 512u << 20);
+  if (options_.msaaSamples == 0) {
+    options_.msaaSamples = device.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : 4;
+  }
 }
 
 Result<std::unique_ptr<Renderer>> Renderer::createHeadless(const Device& device, VkExtent2D extent,
@@ -92,8 +85,10 @@ Status Renderer::createCommon() {
   CETVIEW_TRY(gpuScene);
   gpuScene_ = std::move(*gpuScene);
 
-  // Every frame in flight may hold a full budget, plus a lap skipped at the ring's end per frame.
-  auto ring = UploadRing::create(device_, options_.uploadBudgetBytes * 2 * (options_.framesInFlight + 1));
+  // Every frame in flight holds at most a budget, and the one being recorded another; a block
+  // that does not fit before the ring's end skips the rest of the lap, and in that rare case the
+  // upload simply continues next frame.
+  auto ring = UploadRing::create(device_, options_.uploadBudgetBytes * (options_.framesInFlight + 1));
   CETVIEW_TRY(ring);
   ring_ = *ring;
   return createFrames();
@@ -101,8 +96,7 @@ Status Renderer::createCommon() {
 
 Status Renderer::createFrames() {
   std::uint32_t n = options_.framesInFlight;
-  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n},
-                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * n}};
+  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n}};
   auto poolInfo = vkInit<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   poolInfo.maxSets = n;
   poolInfo.poolSizeCount = 2;
@@ -252,20 +246,13 @@ Status Renderer::waitForFrame(Frame& frame) {
   return {};
 }
 
-void Renderer::writeGlobals(Frame& frame, const Camera& camera, const ViewStyle& style) {
+void Renderer::writeGlobals(Frame& frame, const ViewStyle& style) {
   Globals g{};
-  g.view = viewMatrix(camera);
-  g.viewProj = projectionMatrix(camera, aspect()) * g.view;
-  g.backgroundTop = linear(style.backgroundTop);
-  g.backgroundBottom = linear(style.backgroundBottom);
-  g.edgeColor = linear(style.edgeColor);
-  g.defaultFaceColor = linear(style.defaultFaceColor);
-  // Key light fixed to the camera: from the upper left, in front of the model.
-  g.keyLightDir = glm::vec4(glm::normalize(glm::vec3(-0.45f, 0.65f, 0.62f)), 0.0f);
-  g.lightIntensity = glm::vec4(0.55f, 0.42f, 0.16f, 0.12f);
+  g.backgroundTop = linearColor(style.backgroundTop);
+  g.backgroundBottom = linearColor(style.backgroundBottom);
+  g.edgeColor = linearColor(style.edgeColor);
+  g.lightIntensity = glm::vec4(0.55f, 0.42f, 0.16f, 0.12f);  // headlight, key, sky ambient, specular
   std::uint32_t flags = 0;
-  if (style.fileColors) flags |= CETVIEW_FLAG_FILE_COLORS;
-  if (camera.projection == Projection::kOrthographic) flags |= CETVIEW_FLAG_ORTHOGRAPHIC;
   if (!isSrgbFormat(format_.color)) flags |= CETVIEW_FLAG_ENCODE_SRGB;
   g.flags = glm::uvec4(flags, 0u, 0u, 0u);
   std::memcpy(frame.globals.mapped, &g, sizeof(g));
@@ -273,27 +260,23 @@ void Renderer::writeGlobals(Frame& frame, const Camera& camera, const ViewStyle&
 
 void Renderer::updateDescriptors(Frame& frame) {
   VkBuffer faces = gpuScene_->faceColorBuffer();
-  VkBuffer instances = gpuScene_->instanceBuffer();
-  if (frame.boundFaces == faces && frame.boundInstances == instances) return;
-  VkDescriptorBufferInfo infos[3] = {{frame.globals.buffer, 0, sizeof(Globals)},
-                                     {faces, 0, VK_WHOLE_SIZE},
-                                     {instances, 0, VK_WHOLE_SIZE}};
-  VkWriteDescriptorSet writes[3];
-  const std::uint32_t bindings[3] = {CETVIEW_BINDING_GLOBALS, CETVIEW_BINDING_FACES, CETVIEW_BINDING_INSTANCES};
-  for (int i = 0; i < 3; ++i) {
+  if (frame.boundFaces == faces) return;
+  VkDescriptorBufferInfo infos[2] = {{frame.globals.buffer, 0, sizeof(Globals)}, {faces, 0, VK_WHOLE_SIZE}};
+  VkWriteDescriptorSet writes[2];
+  for (int i = 0; i < 2; ++i) {
     writes[i] = vkInit<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     writes[i].dstSet = frame.set;
-    writes[i].dstBinding = bindings[i];
+    writes[i].dstBinding = i == 0 ? CETVIEW_BINDING_GLOBALS : CETVIEW_BINDING_FACES;
     writes[i].descriptorCount = 1;
     writes[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[i].pBufferInfo = &infos[i];
   }
-  vkUpdateDescriptorSets(device_.device, 3, writes, 0, nullptr);
+  vkUpdateDescriptorSets(device_.device, 2, writes, 0, nullptr);
   frame.boundFaces = faces;
-  frame.boundInstances = instances;
 }
 
-void Renderer::recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const ViewStyle& style) {
+void Renderer::recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera,
+                                const ViewStyle& style) {
   VkCommandBuffer cmd = frame.cmd;
   VkClearValue clears[3]{};
   clears[1].depthStencil = {1.0f, 0};
@@ -313,15 +296,14 @@ void Renderer::recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const V
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.background);
   vkCmdDraw(cmd, 3, 1, 0, 0);
+  FrameView view = makeFrameView(camera, aspect(), style);
   if (style.mode == DisplayMode::kWireframe) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.wireframe);
-    gpuScene_->recordFaceDraws(cmd, pipelines_.layout, CETVIEW_PASS_WIREFRAME);
+    gpuScene_->recordFaceDraws(cmd, pipelines_.layout, view, pipelines_.wireframe, pipelines_.wireframe);
   } else {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.shaded);
-    gpuScene_->recordFaceDraws(cmd, pipelines_.layout, CETVIEW_PASS_SHADED);
+    gpuScene_->recordFaceDraws(cmd, pipelines_.layout, view, pipelines_.shaded, pipelines_.shadedCulled);
     if (style.mode == DisplayMode::kShadedWithEdges) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.edges);
-      gpuScene_->recordEdgeDraws(cmd, pipelines_.layout);
+      gpuScene_->recordEdgeDraws(cmd, pipelines_.layout, view);
     }
   }
   vkCmdEndRenderPass(cmd);
@@ -370,10 +352,10 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
   // it as done), but draws nothing; the error is returned once the submission is out.
   bool render = camera != nullptr && uploaded.ok();
   if (render) {
-    writeGlobals(frame, *camera, *style);
+    writeGlobals(frame, *style);
     updateDescriptors(frame);
     VkFramebuffer framebuffer = attachments_.framebuffers[present ? imageIndex : 0];
-    recordRenderPass(frame, framebuffer, *style);
+    recordRenderPass(frame, framebuffer, *camera, *style);
     if (capture) {
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

@@ -29,25 +29,19 @@
 #include "engine/swapchain.h"
 #include "engine/types.h"
 #include "engine/upload_ring.h"
+#include "engine/view_style.h"
 
 namespace cetview::engine {
 
 struct RendererOptions {
-  std::uint32_t msaaSamples = 4;                 // clamped to what the device supports; 1 disables MSAA
-  std::uint64_t uploadBudgetBytes = 16u << 20;   // per frame; bigger changes spread over frames
+  // Samples per pixel, clamped to what the device supports; 1 disables MSAA. 0 (auto): 4 on GPUs,
+  // 1 on CPU devices (lavapipe), where 4x MSAA costs about three times the frame time.
+  std::uint32_t msaaSamples = 0;
+  // Bytes uploaded per frame at most (64 KiB .. 512 MiB); bigger changes spread over frames.
+  std::uint64_t uploadBudgetBytes = 16u << 20;
   std::uint32_t framesInFlight = 2;              // 1..4
   bool vsync = true;                             // window: FIFO; false: MAILBOX/IMMEDIATE when offered
   GpuSceneOptions scene;                         // initial buffer sizes, indirect draws
-};
-
-// The look of a frame: display mode, colour toggles, palette (sRGB colours).
-struct ViewStyle {
-  DisplayMode mode = DisplayMode::kShadedWithEdges;
-  bool fileColors = true;  // false: every face in defaultFaceColor (instance colours too)
-  Color8 defaultFaceColor = kDefaultFaceColor;
-  Color8 edgeColor{28, 30, 36, 255};
-  Color8 backgroundTop{222, 228, 236, 255};
-  Color8 backgroundBottom{150, 160, 176, 255};
 };
 
 enum class FrameStatus {
@@ -111,8 +105,7 @@ class Renderer {
     VkSemaphore acquired = VK_NULL_HANDLE;  // window: the swapchain image is ready
     Buffer globals;                          // gpu::Globals, host-visible
     VkDescriptorSet set = VK_NULL_HANDLE;
-    VkBuffer boundFaces = VK_NULL_HANDLE;      // storage buffers the set points at
-    VkBuffer boundInstances = VK_NULL_HANDLE;
+    VkBuffer boundFaces = VK_NULL_HANDLE;  // the face colour buffer the set points at
     std::uint64_t serial = 0;    // of the last submission that used this frame
     std::uint64_t ringMark = 0;  // upload ring position after that submission
   };
@@ -128,9 +121,9 @@ class Renderer {
   Status waitForFrame(Frame& frame);
   // One frame: with `camera` null, uploads only; with `capture`, also copies the image to readback_.
   Result<FrameStatus> runFrame(const Camera* camera, const ViewStyle* style, bool capture);
-  void writeGlobals(Frame& frame, const Camera& camera, const ViewStyle& style);
+  void writeGlobals(Frame& frame, const ViewStyle& style);
   void updateDescriptors(Frame& frame);
-  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const ViewStyle& style);
+  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera, const ViewStyle& style);
 
   const Device& device_;
   RendererOptions options_;

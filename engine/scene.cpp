@@ -14,13 +14,14 @@ Error badId(const char* what, std::uint32_t id, std::size_t count) {
 
 }  // namespace
 
-PartRange Scene::addPart(std::uint32_t faceCount, std::uint32_t edgeCount, Color8 color) {
+PartRange Scene::addPart(std::uint32_t faceCount, std::uint32_t edgeCount, Color8 color, bool closedSolid) {
   Part part;
   part.firstFace = this->faceCount();
   part.faceCount = faceCount;
   part.firstEdge = this->edgeCount();
   part.edgeCount = edgeCount;
   part.color = color;
+  part.closedSolid = closedSolid;
   auto id = static_cast<std::uint32_t>(parts_.size());
   parts_.push_back(part);
 
@@ -41,7 +42,6 @@ Result<InstanceId> Scene::addInstance(PartId part, const glm::mat4& transform) {
   instance.transform = transform;
   auto id = static_cast<std::uint32_t>(instances_.size());
   instances_.push_back(instance);
-  instancesDirty_.mark(id);
   return InstanceId{id};
 }
 
@@ -58,20 +58,18 @@ Status Scene::checkFace(FaceId face) const {
 Status Scene::setInstanceTransform(InstanceId instance, const glm::mat4& transform) {
   CETVIEW_TRY(checkInstance(instance));
   instances_[toIndex(instance)].transform = transform;
-  instancesDirty_.mark(toIndex(instance));
   return {};
 }
 
 Status Scene::setInstanceColor(InstanceId instance, std::optional<Color8> color) {
   CETVIEW_TRY(checkInstance(instance));
   instances_[toIndex(instance)].color = color;
-  instancesDirty_.mark(toIndex(instance));
   return {};
 }
 
 Status Scene::setInstanceVisible(InstanceId instance, bool visible) {
   CETVIEW_TRY(checkInstance(instance));
-  instances_[toIndex(instance)].visible = visible;  // drawn or not at record time: nothing to upload
+  instances_[toIndex(instance)].visible = visible;
   return {};
 }
 
@@ -173,7 +171,7 @@ std::uint64_t Scene::pendingBytes() const {
 
 bool Scene::uploadsPending() const {
   return pendingBytes() > 0 || faceQueueHead_ < faceQueue_.size() || edgeQueueHead_ < edgeQueue_.size() ||
-         !faceColorsDirty_.empty() || !faceDrawsDirty_.empty() || !instancesDirty_.empty();
+         !faceColorsDirty_.empty() || !faceDrawsDirty_.empty();
 }
 
 void Scene::clear() {

@@ -15,6 +15,14 @@ Color8 colorFromFloat(float r, float g, float b, float a) {
   return Color8{byte(r), byte(g), byte(b), byte(a)};
 }
 
+glm::vec4 linearColor(Color8 c) {
+  auto channel = [](std::uint8_t v) {
+    float x = static_cast<float>(v) / 255.0f;
+    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+  };
+  return glm::vec4(channel(c.r), channel(c.g), channel(c.b), static_cast<float>(c.a) / 255.0f);
+}
+
 void Bounds::add(const glm::vec3& p) {
   min = glm::min(min, p);
   max = glm::max(max, p);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace cetview::engine {
 
@@ -25,6 +26,9 @@ inline bool operator!=(Color8 x, Color8 y) { return !(x == y); }
 
 // Colour from sRGB-encoded floats in [0, 1] (clamped, rounded to nearest).
 Color8 colorFromFloat(float r, float g, float b, float a = 1.0f);
+
+// Linear-light RGBA (alpha unchanged) of an sRGB colour: what the shaders light with.
+glm::vec4 linearColor(Color8 c);
 
 // The GPU face table's packing: R in the low byte (GLSL unpackUnorm4x8 order).
 constexpr std::uint32_t packColor(Color8 c) {

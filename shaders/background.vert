@@ -4,11 +4,13 @@
 #include "shared.h"
 #include "common.glsl"
 
-layout(location = 0) out float outHeight;  // 0 at the bottom edge of the image, 1 at the top
+layout(location = 0) out vec3 outColor;
 
 void main() {
   vec2 p = vec2((gl_VertexIndex == 1) ? 3.0 : -1.0, (gl_VertexIndex == 2) ? 3.0 : -1.0);
-  // Vulkan clip space has y pointing down: y = -1 is the top row.
-  outHeight = 0.5 - 0.5 * p.y;
+  // Vulkan clip space has y pointing down: y = -1 is the top row. The triangle's far corner lies
+  // beyond the screen, so the colour is extrapolated linearly along the same vertical ramp.
+  float height = 0.5 - 0.5 * p.y;
+  outColor = mix(globals.backgroundBottom.rgb, globals.backgroundTop.rgb, height);
   gl_Position = vec4(p, 1.0, 1.0);
 }

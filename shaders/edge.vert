@@ -1,5 +1,5 @@
 #version 450
-// B-rep edge lines: line-list positions, transformed by the instance.
+// B-rep edge lines: line-list positions in part space.
 #extension GL_GOOGLE_include_directive : require
 #include "shared.h"
 #include "common.glsl"
@@ -7,5 +7,5 @@
 layout(location = 0) in vec3 inPosition;
 
 void main() {
-  gl_Position = globals.viewProj * (instances[draw.instance].model * vec4(inPosition, 1.0));
+  gl_Position = draw.modelViewProj * vec4(inPosition, 1.0);
 }

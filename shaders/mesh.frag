@@ -1,32 +1,38 @@
 #version 450
 // Shaded faces: a headlight (from the eye) plus a key light fixed to the camera, hemisphere
-// ambient and a faint specular. Normals are the exact surface normals, interpolated.
+// ambient and a faint specular, with the exact surface normals interpolated. All in part space.
 #extension GL_GOOGLE_include_directive : require
 #include "shared.h"
 #include "common.glsl"
 
-layout(location = 0) in vec3 inViewPosition;
-layout(location = 1) in vec3 inViewNormal;
-layout(location = 2) flat in vec4 inColor;
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) flat in vec3 inColor;
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  vec3 n = normalize(inViewNormal);
-  bool ortho = (globals.flags.x & CETVIEW_FLAG_ORTHOGRAPHIC) != 0u;
-  vec3 toEye = ortho ? vec3(0.0, 0.0, 1.0) : normalize(-inViewPosition);
+  vec3 n = normalize(inNormal);
+  vec3 toEye = draw.eye.w > 0.5 ? normalize(draw.eye.xyz - inPosition) : draw.eye.xyz;
+  float facing = dot(n, toEye);
   // Two-sided: open shells and faces seen from behind are lit like their front.
-  if (dot(n, toEye) < 0.0) n = -n;
-
-  vec3 toKey = globals.keyLightDir.xyz;
-  float headlight = max(dot(n, toEye), 0.0);
+  if (facing < 0.0) {
+    n = -n;
+    facing = -facing;
+  }
+  vec3 toKey = draw.keyLight.xyz;
   float key = max(dot(n, toKey), 0.0);
-  // Hemisphere ambient: surfaces facing up (view space) get a little more sky.
-  float sky = mix(0.55, 1.0, 0.5 + 0.5 * n.y);
-  vec3 halfway = normalize(toKey + toEye);
-  float specular = pow(max(dot(n, halfway), 0.0), 48.0);
+  // Hemisphere ambient: surfaces facing screen-up get a little more sky.
+  float sky = 0.775 + 0.225 * dot(n, draw.up.xyz);
+  // Blinn-Phong with exponent 32 by repeated squaring (pow is costly on software rasterisers).
+  float s = max(dot(n, normalize(toKey + toEye)), 0.0);
+  s *= s;
+  s *= s;
+  s *= s;
+  s *= s;
+  s *= s;
 
   vec4 k = globals.lightIntensity;
-  vec3 lit = inColor.rgb * (k.x * headlight + k.y * key + k.z * sky) + vec3(k.w * specular);
+  vec3 lit = inColor * (k.x * facing + k.y * key + k.z * sky) + vec3(k.w * s);
   outColor = toTarget(lit);
 }

@@ -19,50 +19,31 @@ using uint = std::uint32_t;
 #endif
 
 // Descriptor set 0 bindings.
-#define CETVIEW_BINDING_GLOBALS 0    // uniform Globals, one per frame in flight
-#define CETVIEW_BINDING_FACES 1      // storage uint[]: per face, packed sRGB RGBA8 (R in the low byte)
-#define CETVIEW_BINDING_INSTANCES 2  // storage InstanceData[]
+#define CETVIEW_BINDING_GLOBALS 0  // uniform Globals, one per frame in flight
+#define CETVIEW_BINDING_FACES 1    // storage uint[]: per face, packed sRGB RGBA8 (R in the low byte)
 
 // Globals.flags.x bits.
-#define CETVIEW_FLAG_FILE_COLORS 1u   // use per-face / per-instance colours, else defaultFaceColor
-#define CETVIEW_FLAG_ORTHOGRAPHIC 2u  // headlight is the view axis, not the ray to the eye
-#define CETVIEW_FLAG_ENCODE_SRGB 4u   // target is UNORM: shaders encode sRGB themselves
+#define CETVIEW_FLAG_ENCODE_SRGB 1u  // the target is UNORM: shaders encode sRGB themselves
 
-// InstanceData.flags.x bits.
-#define CETVIEW_INSTANCE_COLOR_OVERRIDE 1u  // InstanceData.color replaces the face colours
-
-// DrawConstants.pass values.
-#define CETVIEW_PASS_SHADED 0u
-#define CETVIEW_PASS_WIREFRAME 1u
-#define CETVIEW_PASS_EDGES 2u
-
-// Per frame: camera and look.
+// Per frame: what every draw of the frame shares.
 struct Globals {
-  mat4 viewProj;           // world -> clip (Vulkan clip space: y down, depth 0..1)
-  mat4 view;               // world -> view (right-handed, camera looks down -z)
-  vec4 backgroundTop;      // gradient colour at the top of the image
-  vec4 backgroundBottom;   // gradient colour at the bottom
-  vec4 edgeColor;          // B-rep edge lines
-  vec4 defaultFaceColor;   // faces when file colours are off or a face has none
-  vec4 keyLightDir;        // view space, unit vector towards the key light
-  vec4 lightIntensity;     // x headlight, y key light, z ambient (sky), w specular
-  uvec4 flags;             // x: CETVIEW_FLAG_* bits
+  vec4 backgroundTop;     // gradient colour at the top of the image
+  vec4 backgroundBottom;  // gradient colour at the bottom
+  vec4 edgeColor;         // B-rep edge lines
+  vec4 lightIntensity;    // x headlight, y key light, z ambient (sky), w specular
+  uvec4 flags;            // x: CETVIEW_FLAG_* bits
 };
 
-// Per instance of a part: transform and optional colour.
-struct InstanceData {
-  mat4 model;         // part -> world
-  mat4 normalMatrix;  // inverse transpose of model (upper 3x3 used)
-  vec4 color;         // linear RGBA, used with CETVIEW_INSTANCE_COLOR_OVERRIDE
-  uvec4 flags;        // x: CETVIEW_INSTANCE_* bits
-};
-
-// Push constants of every draw.
+// Push constants of each draw (one instance of a part). Lighting happens in part space: the CPU
+// moves the eye and the lights into it per instance, so the vertex shader does one matrix multiply
+// and passes position and normal through. Exact for rigid and uniformly scaled instances, which is
+// every placement a CAD assembly can express (gp_Trsf has no non-uniform scale).
 struct DrawConstants {
-  uint instance;  // index into InstanceData[]
-  uint pass;      // CETVIEW_PASS_*
-  uint reserved0;
-  uint reserved1;
+  mat4 modelViewProj;  // part space -> clip space (Vulkan: y down, depth 0..1)
+  vec4 eye;            // w = 1: xyz is the eye position; w = 0 (orthographic): xyz is the unit direction towards the eye
+  vec4 keyLight;       // xyz: unit direction towards the key light
+  vec4 up;             // xyz: unit screen-up direction (the sky of the hemisphere ambient)
+  vec4 color;          // linear RGBA used for every face when a >= 0; a < 0: the per-face colours
 };
 
 #ifdef __cplusplus

@@ -5,12 +5,12 @@
 #include "shared.h"
 #include "common.glsl"
 
-layout(location = 0) in vec3 inViewPosition;
-layout(location = 1) in vec3 inViewNormal;
-layout(location = 2) flat in vec4 inColor;
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) flat in vec3 inColor;
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  outColor = toTarget(inColor.rgb * 0.6);
+  outColor = toTarget(inColor * 0.6);
 }

@@ -18,9 +18,16 @@ constexpr std::uint32_t kSize = 256;
 
 class GoldenTest : public VulkanTest {
  protected:
+  // Goldens are anti-aliased (auto would pick no MSAA on lavapipe).
+  static RendererOptions msaa4() {
+    RendererOptions options;
+    options.msaaSamples = 4;
+    return options;
+  }
+
   // Loads `mesh` as one part, uploads it completely, renders one frame.
   RgbaImage render(const MeshData& mesh, StandardView view, Projection projection, const ViewStyle& style) {
-    Renderer* r = makeHeadless(kSize, kSize);
+    Renderer* r = makeHeadless(kSize, kSize, msaa4());
     if (r == nullptr) return {};
     auto part = addMesh(r->scene(), mesh);
     EXPECT_TRUE(part.ok()) << part.error().message;
@@ -67,7 +74,7 @@ TEST_F(GoldenTest, LatticeOfThousandsOfSmallObjects) {
 }
 
 TEST_F(GoldenTest, InstancesWithTransformsAndColorOverride) {
-  Renderer* r = makeHeadless(kSize, kSize);
+  Renderer* r = makeHeadless(kSize, kSize, msaa4());
   ASSERT_NE(r, nullptr);
   Scene& scene = r->scene();
   auto part = addMesh(scene, cube(1.0f, 2));  // instance 0: identity

@@ -27,6 +27,7 @@ MeshVertex vertex(glm::vec3 p, glm::vec3 n) { return MeshVertex{{p.x, p.y, p.z},
 
 MeshData cube(float size, std::uint32_t n, glm::vec3 center) {
   MeshData mesh;
+  mesh.closedSolid = true;
   float h = 0.5f * size;
   // Per side: normal, and two axes spanning it (u x v = normal, so triangles wind outward).
   const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -68,6 +69,7 @@ MeshData cube(float size, std::uint32_t n, glm::vec3 center) {
 
 MeshData sphere(float radius, std::uint32_t segments, glm::vec3 center) {
   MeshData mesh;
+  mesh.closedSolid = true;
   auto point = [&](float longitude, float latitude) {
     glm::vec3 n(std::cos(latitude) * std::cos(longitude), std::cos(latitude) * std::sin(longitude),
                 std::sin(latitude));
@@ -90,20 +92,32 @@ MeshData sphere(float radius, std::uint32_t segments, glm::vec3 center) {
       }
       std::uint32_t pole = static_cast<std::uint32_t>(mesh.vertices.size());
       mesh.vertices.push_back(point(0.0f, (hemisphere == 0 ? 0.5f : -0.5f) * kPi));
+      // Counter-clockwise seen from outside: east x north points out, so the southern half
+      // (rows running south) swaps two corners of each triangle.
+      auto triangle = [&](std::uint32_t p, std::uint32_t q, std::uint32_t r) {
+        if (hemisphere == 0) {
+          face.indices.insert(face.indices.end(), {p, q, r});
+        } else {
+          face.indices.insert(face.indices.end(), {p, r, q});
+        }
+      };
       for (std::uint32_t j = 0; j < n; ++j) {
         for (std::uint32_t i = 0; i < n; ++i) {
           std::uint32_t a = first + j * (n + 1) + i;
           if (j + 1 == n) {
-            face.indices.insert(face.indices.end(), {a, a + 1, pole});
+            triangle(a, a + 1, pole);
           } else {
-            face.indices.insert(face.indices.end(), {a, a + 1, a + n + 2, a, a + n + 2, a + n + 1});
+            triangle(a, a + 1, a + n + 2);
+            triangle(a, a + n + 2, a + n + 1);
           }
         }
       }
       mesh.faces.push_back(std::move(face));
     }
   }
-  std::uint32_t samples = 4 * n;
+  // Edges are sampled where the faces' boundary vertices are, as a B-rep tessellator shares one
+  // edge discretisation between the faces on both sides.
+  std::uint32_t samples = n;
   for (int quarter = 0; quarter < 4; ++quarter) {
     std::vector<glm::vec3> equator;
     for (std::uint32_t i = 0; i <= samples; ++i) {
@@ -127,6 +141,7 @@ MeshData sphere(float radius, std::uint32_t segments, glm::vec3 center) {
 
 MeshData lattice(std::uint32_t count, float spacing, std::uint32_t segments) {
   MeshData mesh;
+  mesh.closedSolid = true;
   float radius = 0.35f * spacing;
   float extent = spacing * static_cast<float>(count - 1);
   for (std::uint32_t z = 0; z < count; ++z) {
@@ -149,6 +164,7 @@ MeshData lattice(std::uint32_t count, float spacing, std::uint32_t segments) {
 }
 
 void append(MeshData& into, const MeshData& part) {
+  into.closedSolid = (into.faces.empty() || into.closedSolid) && part.closedSolid;
   auto base = static_cast<std::uint32_t>(into.vertices.size());
   into.vertices.insert(into.vertices.end(), part.vertices.begin(), part.vertices.end());
   for (MeshFace face : part.faces) {

@@ -62,6 +62,7 @@ PixelBox project(const Camera& camera, float aspect, const std::vector<MeshVerte
 
 TEST_F(UpdateTest, ReplacingOneFaceChangesOnlyItsRegion) {
   MeshData mesh = cube(2.0f, 4);
+  mesh.closedSolid = false;  // the replacement opens the box
   Renderer* r = load(mesh);
   ASSERT_NE(r, nullptr);
   Scene& scene = r->scene();
@@ -188,6 +189,7 @@ TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
   MeshData mesh = sphere(1.0f, 16);
   RendererOptions direct;
   direct.scene.indirectDraws = false;
+  direct.msaaSamples = 4;  // as the golden
   Renderer* r = load(mesh, direct);
   ASSERT_NE(r, nullptr);
   EXPECT_FALSE(r->lastUploadStats().workLeft);
@@ -197,7 +199,11 @@ TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
 }
 
 TEST_F(UpdateTest, HidingRecolouringAndClearing) {
-  Renderer* r = load(cube(2.0f, 4));
+  RendererOptions msaa4;
+  msaa4.msaaSamples = 4;  // the end compares with a golden
+  MeshData box = cube(2.0f, 4);
+  box.closedSolid = false;  // hiding a face opens the box
+  Renderer* r = load(box, msaa4);
   ASSERT_NE(r, nullptr);
   Scene& scene = r->scene();
   ASSERT_TRUE(r->finishUploads().ok());
@@ -232,6 +238,35 @@ TEST_F(UpdateTest, HidingRecolouringAndClearing) {
   ASSERT_TRUE(r->finishUploads().ok());
   Camera sphereCamera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
   expectMatchesGolden(shot(*r, sphereCamera), "sphere_shaded_edges");
+}
+
+TEST_F(UpdateTest, ClosedSolidsLookTheSameWithBackFacesCulled) {
+  // Also checks that the test meshes keep their promise: counter-clockwise seen from outside.
+  MeshData closed = sphere(1.0f, 16);
+  append(closed, cube(1.0f, 3, glm::vec3(1.2f, -1.0f, 0.2f)));
+  ASSERT_TRUE(closed.closedSolid);
+  MeshData open = closed;
+  open.closedSolid = false;
+  glm::mat4 mirror(1.0f);
+  mirror[0][0] = -1.0f;
+
+  Renderer* r = load(closed);
+  ASSERT_NE(r, nullptr);
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage culled = shot(*r, camera);
+  saveOutput(culled, "closed_culled");
+  // Mirrored instances of a closed part are drawn two-sided, so they do not turn inside out.
+  ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
+  RgbaImage culledMirror = shot(*r, camera);
+
+  scene.clear();
+  ASSERT_TRUE(addMesh(scene, open).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  EXPECT_LE(compareImages(culled, shot(*r, camera), 2).differing, 20u);
+  ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
+  EXPECT_LE(compareImages(culledMirror, shot(*r, camera), 2).differing, 20u);
 }
 
 TEST_F(UpdateTest, RenderMeshToPngWritesTheSameImage) {
