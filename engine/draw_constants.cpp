@@ -11,9 +11,7 @@ FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& sty
   FrameView v;
   glm::mat4 view = viewMatrix(camera);
   v.viewProj = projectionMatrix(camera, aspect) * view;
-  v.eye = camera.eye();
   v.towardsEye = -glm::normalize(camera.direction);
-  v.orthographic = camera.projection == Projection::kOrthographic;
   // View space -> world for directions: the transpose of the view matrix's rotation.
   glm::mat3 toWorld = glm::transpose(glm::mat3(view));
   v.keyLight = glm::normalize(toWorld * keyLightInView());
@@ -22,7 +20,8 @@ FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& sty
   return v;
 }
 
-DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const std::optional<Color8>& color) {
+DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const std::optional<Color8>& color,
+                            bool twoSided) {
   DrawConstants c{};
   c.modelViewProj = view.viewProj * model;
   // Directions go into part space through the inverse of the linear part; for rigid and
@@ -30,7 +29,8 @@ DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const
   glm::mat4 inverse = glm::inverse(model);
   glm::mat3 directions(inverse);
   auto direction = [&](glm::vec3 d) { return glm::vec4(glm::normalize(directions * d), 0.0f); };
-  c.eye = view.orthographic ? direction(view.towardsEye) : glm::vec4(glm::vec3(inverse * glm::vec4(view.eye, 1.0f)), 1.0f);
+  c.toEye = direction(view.towardsEye);
+  c.toEye.w = twoSided ? 1.0f : 0.0f;
   c.keyLight = direction(view.keyLight);
   c.up = direction(view.up);
   if (view.forcedColor) {

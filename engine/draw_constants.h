@@ -17,9 +17,7 @@ namespace cetview::engine {
 // World-space view of one frame, computed once and shared by every draw.
 struct FrameView {
   glm::mat4 viewProj{1.0f};
-  glm::vec3 eye{0.0f};         // perspective: the eye position
   glm::vec3 towardsEye{0.0f};  // unit, opposite the view direction
-  bool orthographic = false;
   glm::vec3 keyLight{0.0f};  // unit direction towards the key light (fixed to the camera)
   glm::vec3 up{0.0f};        // unit screen-up
   std::optional<glm::vec4> forcedColor;  // linear; set when file colours are off
@@ -31,6 +29,8 @@ glm::vec3 keyLightInView();
 FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& style);
 
 // Constants for drawing one instance placed by `model` (part -> world), with its colour override.
-DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const std::optional<Color8>& color);
+// `twoSided`: normals facing away from the eye are lit as their reverse (false for culled solids).
+DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const std::optional<Color8>& color,
+                            bool twoSided);
 
 }  // namespace cetview::engine

@@ -452,7 +452,7 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       bound = pipeline;
     }
-    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);
     if (indirect_) {
@@ -481,7 +481,7 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     std::uint32_t end = std::min<std::uint32_t>(part.firstEdge + part.edgeCount,
                                                 static_cast<std::uint32_t>(edges_.size()));
     if (part.firstEdge >= end) continue;
-    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);
     if (indirect_) {

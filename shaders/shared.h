@@ -35,12 +35,16 @@ struct Globals {
 };
 
 // Push constants of each draw (one instance of a part). Lighting happens in part space: the CPU
-// moves the eye and the lights into it per instance, so the vertex shader does one matrix multiply
-// and passes position and normal through. Exact for rigid and uniformly scaled instances, which is
-// every placement a CAD assembly can express (gp_Trsf has no non-uniform scale).
+// moves the view direction and the lights into it per instance, so the vertex shader does one
+// matrix multiply and passes only the normal on. Exact for rigid and uniformly scaled instances,
+// which is every placement a CAD assembly can express (gp_Trsf has no non-uniform scale).
+// The viewer is at infinity (OpenGL's default light model): the headlight and the specular use
+// the view axis, not the ray to each pixel. That saves an interpolated position per triangle,
+// a quarter of the frame on software rasterisers, and is invisible at CAD fields of view.
 struct DrawConstants {
   mat4 modelViewProj;  // part space -> clip space (Vulkan: y down, depth 0..1)
-  vec4 eye;            // w = 1: xyz is the eye position; w = 0 (orthographic): xyz is the unit direction towards the eye
+  vec4 toEye;          // xyz: unit direction towards the eye; w = 1: light normals facing away from
+                       // the eye as their reverse (two-sided), w = 0: no flip (culled closed solids)
   vec4 keyLight;       // xyz: unit direction towards the key light
   vec4 up;             // xyz: unit screen-up direction (the sky of the hemisphere ambient)
   vec4 color;          // linear RGBA used for every face when a >= 0; a < 0: the per-face colours

@@ -5,9 +5,8 @@
 #include "shared.h"
 #include "common.glsl"
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) flat in vec3 inColor;
+layout(location = 0) in vec3 inNormal;  // unused; declared so the interface matches mesh.vert
+layout(location = 1) flat in vec3 inColor;
 
 layout(location = 0) out vec4 outColor;
 
