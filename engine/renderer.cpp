@@ -319,16 +319,20 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
   bool present = camera != nullptr && !headless();
   std::uint32_t imageIndex = 0;
   if (present) {
+    // Nothing to draw into (minimised, or the swapchain is out of date): the frame still uploads,
+    // so streaming continues and the progressive loader is not held back.
     auto ready = prepareSwapchain();
     CETVIEW_TRY(ready);
-    if (!*ready) return FrameStatus::kSkipped;
-    VkResult r = vkAcquireNextImageKHR(device_.device, swapchain_.swapchain, UINT64_MAX, frame.acquired,
-                                       VK_NULL_HANDLE, &imageIndex);
-    if (r == VK_ERROR_OUT_OF_DATE_KHR) {
-      needRecreate_ = true;
-      return FrameStatus::kSkipped;
+    VkResult r = VK_ERROR_OUT_OF_DATE_KHR;
+    if (*ready) {
+      r = vkAcquireNextImageKHR(device_.device, swapchain_.swapchain, UINT64_MAX, frame.acquired, VK_NULL_HANDLE,
+                                &imageIndex);
+      if (r == VK_ERROR_OUT_OF_DATE_KHR) needRecreate_ = true;
     }
-    if (r == VK_SUBOPTIMAL_KHR) {
+    if (r == VK_ERROR_OUT_OF_DATE_KHR) {
+      present = false;
+      camera = nullptr;
+    } else if (r == VK_SUBOPTIMAL_KHR) {
       needRecreate_ = true;  // still usable: draw and present it, recreate next frame
     } else if (r != VK_SUCCESS) {
       return vkError("vkAcquireNextImageKHR", r);

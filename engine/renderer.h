@@ -72,7 +72,8 @@ class Renderer {
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
 
-  // Uploads (within the budget) and draws one frame. Errors: kUnsupported (wireframe without
+  // Uploads (within the budget) and draws one frame. A skipped frame (minimised, swapchain out of
+  // date) still uploads, so streaming goes on. Errors: kUnsupported (wireframe without
   // fillModeNonSolid), kDeviceLost, kSurfaceLost, kOutOfMemory, kVulkan.
   Result<FrameStatus> drawFrame(const Camera& camera, const ViewStyle& style = {});
 

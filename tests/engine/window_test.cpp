@@ -176,13 +176,15 @@ TEST_F(WindowTest, ResizeMinimiseAndOutOfDateSwapchains) {
   EXPECT_EQ(r.extent().height, 150u);
   EXPECT_GE(r.swapchainRecreations(), 2u);
 
-  // Minimised: a 0x0 framebuffer draws nothing and is no error.
+  // Minimised: a 0x0 framebuffer draws nothing and is no error, but uploads go on.
   framebuffer_ = {0, 0};
+  ASSERT_TRUE(addMesh(r.scene(), sphere(0.5f, 12, glm::vec3(0.0f, 0.0f, 1.5f))).ok());
   for (int i = 0; i < 3; ++i) {
     auto status = r.drawFrame(camera);
     ASSERT_TRUE(status.ok()) << status.error().message;
     EXPECT_EQ(*status, FrameStatus::kSkipped);
   }
+  EXPECT_FALSE(r.scene().uploadsPending());
   framebuffer_ = {200, 150};
   drawUntilRendered(r, camera);
 
