@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   cetview::addCdtCommand(app, exitCode);
   cetview::addExportCommand(app, exitCode);
   cetview::addBenchCommand(app, exitCode);
+  cetview::addRenderCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

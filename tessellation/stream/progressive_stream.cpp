@@ -16,7 +16,7 @@ ProgressiveStream::ProgressiveStream(brep::Tessellator& tessellator, int targetL
                    [&](brep::FaceId a, brep::FaceId b) { return faces[a].area > faces[b].area; });
   sent_.assign(faces.size(), 0);
   for (unsigned i = 0; i < options_.threads; ++i) rings_.push_back(std::make_unique<SpscRing>(options_.ringBytes));
-  control_ = std::make_unique<SpscRing>(64 * 1024);
+  control_ = std::make_unique<SpscRing>(std::size_t{1} << 20);
   target_ = std::clamp(targetLevel, 0, tess_.lastLevel());
   start_ = std::chrono::steady_clock::now();
   coordinator_ = std::thread([this] { coordinate(); });
@@ -95,7 +95,9 @@ void ProgressiveStream::coordinate() {
 }
 
 bool ProgressiveStream::runLevel(int level) {
+  const bool newEdges = tess_.edgeLevel() < level;
   if (!tess_.discretiseEdges(level, options_.threads, &cancel_)) return false;
+  if (newEdges) publishEdges(level);
   std::atomic<std::size_t> next{0};
   std::atomic<bool> cancelled{false};
   const auto work = [&](unsigned worker) {
@@ -127,6 +129,30 @@ bool ProgressiveStream::runLevel(int level) {
   work(0);
   for (auto& t : threads) t.join();
   return !cancelled.load();
+}
+
+void ProgressiveStream::publishEdges(int level) {
+  const auto edges = static_cast<brep::EdgeId>(tess_.model().edgeCount());
+  std::vector<std::uint8_t> buffer(sizeof(EdgeLevelHeader));
+  std::vector<float> xyz;
+  std::uint32_t count = 0;
+  for (brep::EdgeId e = 0; e < edges; ++e) {
+    tess_.edgePolyline(e, level, xyz);
+    if (xyz.empty()) continue;
+    const std::uint32_t entry[2] = {e, static_cast<std::uint32_t>(xyz.size() / 3)};
+    const auto* a = reinterpret_cast<const std::uint8_t*>(entry);
+    const auto* b = reinterpret_cast<const std::uint8_t*>(xyz.data());
+    buffer.insert(buffer.end(), a, a + sizeof entry);
+    buffer.insert(buffer.end(), b, b + xyz.size() * sizeof(float));
+    ++count;
+  }
+  const EdgeLevelHeader h{static_cast<std::uint32_t>(level), count};
+  std::memcpy(buffer.data(), &h, sizeof h);
+  RecordWriter writer(*control_);
+  writer.write(buffer.data(), buffer.size(), kEdgeLevel, [this] {
+    std::this_thread::yield();
+    return !stop_.load();
+  });
 }
 
 void ProgressiveStream::publishFace(RecordWriter& writer, std::vector<std::uint8_t>& buffer, brep::FaceId face,

@@ -66,6 +66,7 @@ class ProgressiveStream {
   void publishFace(RecordWriter& writer, std::vector<std::uint8_t>& buffer, brep::FaceId face, int level,
                    brep::FaceStatus status, std::uint32_t& sentVertices);
   bool waitForSpace();
+  void publishEdges(int level);
 
   brep::Tessellator& tess_;
   StreamOptions options_;

@@ -17,6 +17,14 @@ std::size_t StreamConsumer::poll(std::size_t byteBudget, MeshSink& sink) {
   // Level-done records first, so that rings found empty below prove their levels complete.
   RecordReader::Record r;
   while (control_.next(r)) {
+    if (r.tag == kEdgeLevel && r.size >= sizeof(EdgeLevelHeader)) {
+      EdgeLevelHeader h;
+      std::memcpy(&h, r.data, sizeof h);
+      if (edgeLevels_.size() <= h.level) edgeLevels_.resize(h.level + 1);
+      edgeLevels_[h.level].assign(r.data, r.data + r.size);
+      showEdges(sink);
+      continue;
+    }
     if (r.tag != kLevelDone || r.size < sizeof(LevelDoneHeader)) continue;
     LevelDoneHeader h;
     std::memcpy(&h, r.data, sizeof h);
@@ -76,6 +84,30 @@ void StreamConsumer::setShowLevel(int level, MeshSink& sink) {
     held_[best].pop_front();
   }
   for (std::uint32_t f = 0; f < faces_.size(); ++f) show(f, sink);
+  showEdges(sink);
+}
+
+void StreamConsumer::showEdges(MeshSink& sink) {
+  int want = std::min(showLevel_, static_cast<int>(edgeLevels_.size()) - 1);
+  while (want >= 0 && edgeLevels_[static_cast<std::size_t>(want)].empty()) --want;
+  if (want < 0 || want == shownEdgeLevel_) return;
+  shownEdgeLevel_ = want;
+  const std::vector<std::uint8_t>& data = edgeLevels_[static_cast<std::size_t>(want)];
+  EdgeLevelHeader h;
+  std::memcpy(&h, data.data(), sizeof h);
+  std::size_t at = sizeof h;
+  std::vector<float> xyz;
+  for (std::uint32_t i = 0; i < h.edgeCount && at + 8 <= data.size(); ++i) {
+    std::uint32_t entry[2];
+    std::memcpy(entry, data.data() + at, sizeof entry);
+    at += sizeof entry;
+    const std::size_t bytes = std::size_t{entry[1]} * 3 * sizeof(float);
+    if (at + bytes > data.size()) return;  // corrupt: stop rather than read past the record
+    xyz.resize(std::size_t{entry[1]} * 3);
+    std::memcpy(xyz.data(), data.data() + at, bytes);
+    at += bytes;
+    sink.setEdgePolyline(entry[0], xyz.data(), entry[1]);
+  }
 }
 
 void StreamConsumer::apply(const std::uint8_t* data, std::size_t size, MeshSink& sink) {

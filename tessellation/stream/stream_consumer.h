@@ -23,6 +23,8 @@ class MeshSink {
   virtual std::uint32_t appendVertices(const StreamVertex* vertices, std::size_t count) = 0;
   // Face `face` (model face id) now shows these triangles (indices into the shared array).
   virtual void setFaceIndices(std::uint32_t face, const std::uint32_t* indices, std::size_t count) = 0;
+  // B-rep edge `edge` (model edge id) is now this polyline (xyz floats, part coordinates).
+  virtual void setEdgePolyline(std::uint32_t edge, const float* xyz, std::size_t pointCount) = 0;
 };
 
 struct LevelStat {
@@ -64,6 +66,7 @@ class StreamConsumer {
     int shown = -1;
   };
   void apply(const std::uint8_t* data, std::size_t size, MeshSink& sink);
+  void showEdges(MeshSink& sink);
   void show(std::uint32_t face, MeshSink& sink);
   bool drainedBelow(int level);
 
@@ -75,6 +78,8 @@ class StreamConsumer {
   std::vector<int> ringLevel_;  // per ring: level of the last record read from it
   std::deque<LevelDoneHeader> levelDone_;  // read, waiting for their faces' records
   std::vector<LevelStat> levels_;
+  std::vector<std::vector<std::uint8_t>> edgeLevels_;  // kEdgeLevel payloads by level
+  int shownEdgeLevel_ = -1;
   int showLevel_;
   std::uint64_t shownTriangles_ = 0;
 };

@@ -6,6 +6,8 @@
 //               firstVertex + vertexCount - 1, appended after all earlier ones); the indices are the
 //               face's complete triangle list for the level, in face-local ids.
 //   kLevelDone: LevelDoneHeader, sent on the control ring once every face reached the level.
+//   kEdgeLevel: EdgeLevelHeader, then per edge: uint32 edge id, uint32 point count, 3 floats per
+//               point (part coordinates). Sent on the control ring once the level's edges exist.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +17,7 @@ namespace cetview::stream {
 enum RecordTag : std::uint32_t {
   kFaceLevel = 1,
   kLevelDone = 2,
+  kEdgeLevel = 3,
 };
 
 struct StreamVertex {
@@ -38,6 +41,11 @@ struct LevelDoneHeader {
   std::uint64_t triangles;  // over all faces at this level (parts counted once)
   double chordal;           // the level's chordal tolerance, model units
   double ms;                // since the stream started
+};
+
+struct EdgeLevelHeader {
+  std::uint32_t level;
+  std::uint32_t edgeCount;  // entries that follow
 };
 
 }  // namespace cetview::stream

@@ -21,6 +21,7 @@ struct RecordingSink : MeshSink {
   std::vector<StreamVertex> vertices;
   std::map<std::uint32_t, std::vector<std::uint32_t>> faces;
   std::size_t replacements = 0;
+  std::map<std::uint32_t, std::vector<float>> edges;
   std::uint32_t appendVertices(const StreamVertex* v, std::size_t count) override {
     const auto first = static_cast<std::uint32_t>(vertices.size());
     vertices.insert(vertices.end(), v, v + count);
@@ -30,6 +31,9 @@ struct RecordingSink : MeshSink {
     for (std::size_t i = 0; i < count; ++i) EXPECT_LT(idx[i], vertices.size());
     faces[face].assign(idx, idx + count);
     ++replacements;
+  }
+  void setEdgePolyline(std::uint32_t edge, const float* xyz, std::size_t count) override {
+    edges[edge].assign(xyz, xyz + 3 * count);
   }
   // Face f's triangles as position triples, for comparison across runs.
   std::vector<float> trianglePositions(std::uint32_t f) const {
@@ -84,6 +88,16 @@ TEST(ProgressiveStream, LevelsCompleteInOrderAndMirrorTheTessellator) {
     }
   }
   EXPECT_EQ(consumer.shownTriangles(), demo.tess->triangleCount(last));
+  // Every non-degenerate edge shows its final polyline.
+  std::vector<float> xyz;
+  std::size_t polylines = 0;
+  for (std::uint32_t e = 0; e < demo.model->edgeCount(); ++e) {
+    demo.tess->edgePolyline(e, last, xyz);
+    if (xyz.empty()) continue;
+    ++polylines;
+    EXPECT_EQ(sink.edges[e], xyz) << "edge " << e;
+  }
+  EXPECT_GT(polylines, 20u);
   // Every face shows exactly the tessellator's final triangles, vertex for vertex.
   for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) {
     const brep::FaceMesh& mesh = demo.tess->faceMesh(f);
