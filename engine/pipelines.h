@@ -27,7 +27,7 @@ struct Pipelines {
   VkPipeline background = VK_NULL_HANDLE;
   VkPipeline shaded = VK_NULL_HANDLE;        // two-sided
   VkPipeline shadedCulled = VK_NULL_HANDLE;  // back faces culled: closed solids only
-  VkPipeline wireframe = VK_NULL_HANDLE;  // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
+  VkPipeline wireframe = VK_NULL_HANDLE;     // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
   VkPipeline edges = VK_NULL_HANDLE;
 };
 

@@ -7,8 +7,9 @@
 namespace cetview::engine {
 
 Result<PartRange> addMesh(Scene& scene, const MeshData& mesh) {
-  PartRange range = scene.addPart(static_cast<std::uint32_t>(mesh.faces.size()),
-                                  static_cast<std::uint32_t>(mesh.edges.size()), kDefaultFaceColor, mesh.closedSolid);
+  PartRange range =
+      scene.addPart(static_cast<std::uint32_t>(mesh.faces.size()),
+                    static_cast<std::uint32_t>(mesh.edges.size()), kDefaultFaceColor, mesh.closedSolid);
   std::uint32_t base = scene.appendVertices(mesh.vertices.data(), mesh.vertices.size());
   std::vector<std::uint32_t> shifted;
   for (std::uint32_t i = 0; i < range.faceCount; ++i) {

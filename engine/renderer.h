@@ -39,9 +39,9 @@ struct RendererOptions {
   std::uint32_t msaaSamples = 0;
   // Bytes uploaded per frame at most (64 KiB .. 512 MiB); bigger changes spread over frames.
   std::uint64_t uploadBudgetBytes = 16u << 20;
-  std::uint32_t framesInFlight = 2;              // 1..4
-  bool vsync = true;                             // window: FIFO; false: MAILBOX/IMMEDIATE when offered
-  GpuSceneOptions scene;                         // initial buffer sizes, indirect draws
+  std::uint32_t framesInFlight = 2;  // 1..4
+  bool vsync = true;                 // window: FIFO; false: MAILBOX/IMMEDIATE when offered
+  GpuSceneOptions scene;             // initial buffer sizes, indirect draws
 };
 
 enum class FrameStatus {
@@ -104,11 +104,11 @@ class Renderer {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
     VkSemaphore acquired = VK_NULL_HANDLE;  // window: the swapchain image is ready
-    Buffer globals;                          // gpu::Globals, host-visible
+    Buffer globals;                         // gpu::Globals, host-visible
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkBuffer boundFaces = VK_NULL_HANDLE;  // the face colour buffer the set points at
-    std::uint64_t serial = 0;    // of the last submission that used this frame
-    std::uint64_t ringMark = 0;  // upload ring position after that submission
+    std::uint64_t serial = 0;              // of the last submission that used this frame
+    std::uint64_t ringMark = 0;            // upload ring position after that submission
   };
 
   Renderer(const Device& device, const RendererOptions& options);
@@ -124,7 +124,8 @@ class Renderer {
   Result<FrameStatus> runFrame(const Camera* camera, const ViewStyle* style, bool capture);
   void writeGlobals(Frame& frame, const ViewStyle& style);
   void updateDescriptors(Frame& frame);
-  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera, const ViewStyle& style);
+  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera,
+                        const ViewStyle& style);
 
   const Device& device_;
   RendererOptions options_;

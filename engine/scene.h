@@ -148,7 +148,7 @@ class Scene {
   std::uint64_t pendingIndexBytes_ = 0;
   std::uint64_t pendingEdgeBytes_ = 0;
   DirtySet faceColorsDirty_;
-  DirtySet faceDrawsDirty_;  // visibility changed: the draw command must be rewritten
+  DirtySet faceDrawsDirty_;       // visibility changed: the draw command must be rewritten
   std::uint64_t generation_ = 0;  // bumped by clear()
 };
 

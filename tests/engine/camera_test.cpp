@@ -15,8 +15,8 @@ namespace {
 
 using namespace engine;
 
-const StandardView kAllViews[] = {StandardView::kIso,  StandardView::kFront, StandardView::kBack,
-                                  StandardView::kLeft, StandardView::kRight, StandardView::kTop,
+const StandardView kAllViews[] = {StandardView::kIso,   StandardView::kFront, StandardView::kBack,
+                                  StandardView::kLeft,  StandardView::kRight, StandardView::kTop,
                                   StandardView::kBottom};
 
 Bounds box(glm::vec3 min, glm::vec3 max) {
@@ -98,7 +98,8 @@ class CameraFitTest : public ::testing::TestWithParam<FitCase> {};
 TEST_P(CameraFitTest, FitContainsTheBoxAndIsTight) {
   const FitCase& c = GetParam();
   const Bounds boxes[] = {box({-1, -1, -1}, {1, 1, 1}), box({10, 20, -5}, {14, 21, 30}),
-                          box({-0.001f, -0.002f, 0}, {0.001f, 0.002f, 0.0005f}), box({0, 0, 0}, {500, 20, 3})};
+                          box({-0.001f, -0.002f, 0}, {0.001f, 0.002f, 0.0005f}),
+                          box({0, 0, 0}, {500, 20, 3})};
   for (const Bounds& b : boxes) {
     for (StandardView v : kAllViews) {
       Camera camera;

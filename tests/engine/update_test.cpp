@@ -119,7 +119,8 @@ TEST_F(UpdateTest, LargeUploadSpreadsOverFramesAndNeverShowsHalfAFace) {
     EXPECT_EQ(r->committedTriangles() % trianglesPerFace, 0u) << "half a face is drawn";
     ASSERT_LT(++frames, 200) << "uploads do not finish";
   }
-  EXPECT_GE(std::uint64_t(frames), total / small.uploadBudgetBytes) << total << " bytes in " << frames << " frames";
+  EXPECT_GE(std::uint64_t(frames), total / small.uploadBudgetBytes)
+      << total << " bytes in " << frames << " frames";
   EXPECT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
   RgbaImage streamed = shot(*r, camera);
 
@@ -157,7 +158,8 @@ TEST_F(UpdateTest, FacesSwitchOnlyWhenCompletelyUploaded) {
   for (;;) {
     RgbaImage frame = shot(*r, camera);
     if (r->lastUploadStats().facesCompleted > 0) break;
-    ASSERT_EQ(compareImages(frame, coarse, 0).differing, 0u) << "frame " << waiting << " shows a partial face";
+    ASSERT_EQ(compareImages(frame, coarse, 0).differing, 0u)
+        << "frame " << waiting << " shows a partial face";
     ASSERT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
     ASSERT_LT(++waiting, 400);
   }

@@ -45,7 +45,9 @@ std::string budgetLabel(std::uint64_t budget) {
   return budget >= kUnlimited ? "unlimited (256 MiB)" : std::to_string(budget >> 20) + " MiB";
 }
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 // Spheres of `segments` needed for about `triangles` triangles.
 std::uint32_t sphereCount(std::uint64_t triangles, std::uint32_t segments) {
@@ -123,10 +125,10 @@ double meanFrameMs(Renderer& r, const Camera& camera, const ViewStyle& style, do
 }
 
 void frameTimes(const Device& device, const Args& args) {
-  std::printf("\n1. Frame time (ms, and fps), %ux%u, shaded with B-rep edges, perspective iso view\n", args.width,
-              args.height);
-  std::printf("%10s %6s %6s | %16s | %16s | %16s\n", "triangles", "faces", "edges", "closed, 1x",
-              "open, 1x", "closed, 4x MSAA");
+  std::printf("\n1. Frame time (ms, and fps), %ux%u, shaded with B-rep edges, perspective iso view\n",
+              args.width, args.height);
+  std::printf("%10s %6s %6s | %16s | %16s | %16s\n", "triangles", "faces", "edges", "closed, 1x", "open, 1x",
+              "closed, 4x MSAA");
   const std::uint64_t targets[] = {10000, 100000, 500000, 1000000, 2000000};
   for (std::uint64_t target : targets) {
     if (target > args.maxTriangles) break;
@@ -147,8 +149,8 @@ void frameTimes(const Device& device, const Args& args) {
       ms[k] = meanFrameMs(*r, camera, ViewStyle{}, args.seconds);
     }
     std::printf("%10llu %6zu %6zu | %7.1f (%5.1f) | %7.1f (%5.1f) | %7.1f (%5.1f)\n",
-                static_cast<unsigned long long>(test::triangleCount(mesh)), mesh.faces.size(), mesh.edges.size(),
-                ms[0], 1000.0 / ms[0], ms[1], 1000.0 / ms[1], ms[2], 1000.0 / ms[2]);
+                static_cast<unsigned long long>(test::triangleCount(mesh)), mesh.faces.size(),
+                mesh.edges.size(), ms[0], 1000.0 / ms[0], ms[1], 1000.0 / ms[1], ms[2], 1000.0 / ms[2]);
   }
 }
 
@@ -192,10 +194,11 @@ void streaming(const Device& device, const Args& args) {
   std::uint64_t base = std::min<std::uint64_t>(args.maxTriangles, 1000000);
   std::uint32_t segments = segmentsFor(base);
   MeshData mesh = sphereGridOf(base, segments);
-  std::printf("\n3. Frames while a re-tessellation streams in: %llu triangles, every face replaced by a new array\n"
-              "   of the same size over new vertices (the picture and its drawing cost stay the same).\n"
-              "   Each frame is waited for, so a frame is charged with its whole upload.\n",
-              static_cast<unsigned long long>(test::triangleCount(mesh)));
+  std::printf(
+      "\n3. Frames while a re-tessellation streams in: %llu triangles, every face replaced by a new array\n"
+      "   of the same size over new vertices (the picture and its drawing cost stay the same).\n"
+      "   Each frame is waited for, so a frame is charged with its whole upload.\n",
+      static_cast<unsigned long long>(test::triangleCount(mesh)));
   std::printf("%20s %7s %10s %10s %9s %11s %7s %13s\n", "budget per frame", "frames", "idle mean", "idle max",
               "mean ms", "longest ms", "MB", "max MB/frame");
   for (std::uint64_t budget : {std::uint64_t{16} << 20, std::uint64_t{4} << 20, kUnlimited}) {
