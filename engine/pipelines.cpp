@@ -217,11 +217,7 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
   return pipeline;
 }
 
-Status createAll(const Device& device, const TargetFormat& format, Pipelines& p) {
-  auto renderPass = createRenderPass(device, format);
-  CETVIEW_TRY(renderPass);
-  p.renderPass = *renderPass;
-
+Status createLayouts(const Device& device, Pipelines& p) {
   constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
   bindings[0] = {CETVIEW_BINDING_GLOBALS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kStages, nullptr};
@@ -238,6 +234,14 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
   layoutInfo.pushConstantRangeCount = 1;
   layoutInfo.pPushConstantRanges = &push;
   CETVIEW_VK(vkCreatePipelineLayout(device.device, &layoutInfo, nullptr, &p.layout));
+  return {};
+}
+
+// The render pass and every pipeline; the layouts must exist.
+Status createPassAndPipelines(const Device& device, const TargetFormat& format, Pipelines& p) {
+  auto renderPass = createRenderPass(device, format);
+  CETVIEW_TRY(renderPass);
+  p.renderPass = *renderPass;
 
   using Input = PipelineDesc::Input;
   constexpr auto kTriangles = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
@@ -278,11 +282,23 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
   return {};
 }
 
+
+// Destroys the render pass and the pipelines, keeping the layouts.
+void destroyPassAndPipelines(const Device& device, Pipelines& p) {
+  for (VkPipeline* pipeline : {&p.background, &p.shaded, &p.shadedCulled, &p.wireframe, &p.edges}) {
+    if (*pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.device, *pipeline, nullptr);
+    *pipeline = VK_NULL_HANDLE;
+  }
+  if (p.renderPass != VK_NULL_HANDLE) vkDestroyRenderPass(device.device, p.renderPass, nullptr);
+  p.renderPass = VK_NULL_HANDLE;
+}
+
 }  // namespace
 
 Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format) {
   Pipelines p;
-  Status status = createAll(device, format, p);
+  Status status = createLayouts(device, p);
+  if (status) status = createPassAndPipelines(device, format, p);
   if (!status) {
     destroyPipelines(device, p);
     return status.error();
@@ -290,13 +306,15 @@ Result<Pipelines> createPipelines(const Device& device, const TargetFormat& form
   return p;
 }
 
+Status recreatePipelines(const Device& device, const TargetFormat& format, Pipelines& p) {
+  destroyPassAndPipelines(device, p);
+  return createPassAndPipelines(device, format, p);
+}
+
 void destroyPipelines(const Device& device, Pipelines& p) {
-  for (VkPipeline pipeline : {p.background, p.shaded, p.shadedCulled, p.wireframe, p.edges}) {
-    if (pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.device, pipeline, nullptr);
-  }
+  destroyPassAndPipelines(device, p);
   if (p.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.device, p.layout, nullptr);
   if (p.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.device, p.setLayout, nullptr);
-  if (p.renderPass != VK_NULL_HANDLE) vkDestroyRenderPass(device.device, p.renderPass, nullptr);
   p = Pipelines{};
 }
 

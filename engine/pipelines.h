@@ -33,6 +33,9 @@ struct Pipelines {
 
 // Errors: kVulkan, kOutOfMemory.
 Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format);
+// For a new target format: a new render pass and pipelines; the descriptor set layout and the
+// pipeline layout stay, so descriptor sets allocated with them stay valid and updatable.
+Status recreatePipelines(const Device& device, const TargetFormat& format, Pipelines& pipelines);
 void destroyPipelines(const Device& device, Pipelines& pipelines);
 
 // Depth formats in order of preference that the device can attach: D32, D24S8, D16.

@@ -208,12 +208,14 @@ Status Renderer::recreateSwapchain(VkExtent2D framebuffer, bool* minimised) {
   ++recreations_;
 
   if (format->format != format_.color) {
-    // The pipelines are compiled against the render pass's format.
-    destroyPipelines(device_, pipelines_);
+    // The pipelines are compiled against the render pass's format. After a failure the format is
+    // left unknown, so the next recreation tries again instead of drawing with no pipelines.
     format_.color = format->format;
-    auto pipelines = createPipelines(device_, format_);
-    CETVIEW_TRY(pipelines);
-    pipelines_ = *pipelines;
+    Status pipelines = recreatePipelines(device_, format_, pipelines_);
+    if (!pipelines) {
+      format_.color = VK_FORMAT_UNDEFINED;
+      return pipelines.error();
+    }
   }
   auto attachments =
       createAttachments(device_, pipelines_.renderPass, format_, swapchain_.extent, swapchain_.views);
