@@ -6,6 +6,8 @@
 
 namespace cetview::engine {
 
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "edge polylines are passed as packed xyz floats");
+
 Result<PartRange> addMesh(Scene& scene, const MeshData& mesh) {
   PartRange range =
       scene.addPart(static_cast<std::uint32_t>(mesh.faces.size()),
@@ -21,7 +23,7 @@ Result<PartRange> addMesh(Scene& scene, const MeshData& mesh) {
   }
   for (std::uint32_t i = 0; i < range.edgeCount; ++i) {
     const auto& points = mesh.edges[i];
-    CETVIEW_TRY(scene.setEdgePolyline(range.edge(i), &points[0].x, points.size()));
+    CETVIEW_TRY(scene.setEdgePolyline(range.edge(i), points.empty() ? nullptr : &points[0].x, points.size()));
   }
   auto instance = scene.addInstance(range.part);
   CETVIEW_TRY(instance);

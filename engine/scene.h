@@ -6,8 +6,9 @@
 // Scene is CPU state only. Every change is recorded here and the Renderer uploads it later, within
 // its per-frame byte budget: until a face's new index array is on the GPU the previous one is drawn,
 // so a frame never shows a half-replaced face. Only the latest array of a face is uploaded even if
-// it was replaced several times in between. Not thread-safe: call from the render thread (the
-// stream's worker hands its snapshots over through its ring buffer).
+// it was replaced several times in between. Scene keeps a CPU copy of the vertex array (24 bytes
+// a vertex: bounds and staging) but drops each index array once it is uploaded. Not thread-safe:
+// call from the render thread (the stream's worker hands its snapshots over through its ring).
 #pragma once
 
 #include <cstddef>
