@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
@@ -128,7 +129,14 @@ INSTANTIATE_TEST_SUITE_P(Projections, CameraFitTest,
                                            FitCase{Projection::kPerspective, 0.5f},
                                            FitCase{Projection::kOrthographic, 1.0f},
                                            FitCase{Projection::kOrthographic, 16.0f / 9.0f},
-                                           FitCase{Projection::kOrthographic, 0.5f}));
+                                           FitCase{Projection::kOrthographic, 0.5f}),
+                         [](const ::testing::TestParamInfo<FitCase>& info) {
+                           const char* projection = info.param.projection == Projection::kPerspective
+                                                        ? "Perspective"
+                                                        : "Orthographic";
+                           return std::string(projection) + "Aspect" +
+                                  std::to_string(static_cast<int>(std::lround(info.param.aspect * 100.0f)));
+                         });
 
 TEST(CameraTest, FitKeepsDirectionAndCentresTheTarget) {
   Bounds b = box({2, 4, 6}, {4, 8, 12});
