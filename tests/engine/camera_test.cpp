@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -94,6 +95,11 @@ struct FitCase {
   float aspect;
 };
 
+void PrintTo(const FitCase& c, std::ostream* os) {
+  *os << (c.projection == Projection::kPerspective ? "perspective" : "orthographic") << ", aspect "
+      << c.aspect;
+}
+
 class CameraFitTest : public ::testing::TestWithParam<FitCase> {};
 
 TEST_P(CameraFitTest, FitContainsTheBoxAndIsTight) {
@@ -130,12 +136,12 @@ INSTANTIATE_TEST_SUITE_P(Projections, CameraFitTest,
                                            FitCase{Projection::kOrthographic, 1.0f},
                                            FitCase{Projection::kOrthographic, 16.0f / 9.0f},
                                            FitCase{Projection::kOrthographic, 0.5f}),
-                         [](const ::testing::TestParamInfo<FitCase>& info) {
-                           const char* projection = info.param.projection == Projection::kPerspective
+                         [](const ::testing::TestParamInfo<FitCase>& param) {
+                           const char* projection = param.param.projection == Projection::kPerspective
                                                         ? "Perspective"
                                                         : "Orthographic";
                            return std::string(projection) + "Aspect" +
-                                  std::to_string(static_cast<int>(std::lround(info.param.aspect * 100.0f)));
+                                  std::to_string(static_cast<int>(std::lround(param.param.aspect * 100.0f)));
                          });
 
 TEST(CameraTest, FitKeepsDirectionAndCentresTheTarget) {
