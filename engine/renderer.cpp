@@ -317,6 +317,7 @@ void Renderer::recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const C
       gpuScene_->recordEdgeDraws(cmd, pipelines_.layout, view);
     }
   }
+  if (overlay_) overlay_(cmd);
   vkCmdEndRenderPass(cmd);
 }
 

@@ -98,6 +98,18 @@ class Renderer {
   std::uint32_t swapchainRecreations() const { return recreations_; }
   const Device& device() const { return device_; }
 
+  // Extra drawing after the scene, inside the render pass of every rendered frame: the viewer
+  // records its ImGui draw data here (the engine knows nothing of ImGui). The callback gets the
+  // frame's command buffer with the render pass begun, viewport and scissor set to the whole
+  // target; it may bind its own pipelines, made for renderPass() with samples() samples.
+  // renderPass() stays the same for the renderer's life unless the window surface changes pixel
+  // format (then swapchainRecreations() has grown too). An empty function removes the overlay.
+  using OverlayFn = std::function<void(VkCommandBuffer)>;
+  void setOverlay(OverlayFn overlay) { overlay_ = std::move(overlay); }
+  VkRenderPass renderPass() const { return pipelines_.renderPass; }
+  // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.
+  std::uint32_t swapchainImageCount() const { return static_cast<std::uint32_t>(swapchain_.images.size()); }
+
  private:
   struct Frame {
     VkCommandPool pool = VK_NULL_HANDLE;
@@ -142,6 +154,7 @@ class Renderer {
   std::uint64_t serial_ = 0;
   std::deque<std::pair<std::uint64_t, Buffer>> retired_;  // (serial of the last frame using it, buffer)
   UploadStats lastUpload_;
+  OverlayFn overlay_;
 
   // Headless target.
   Image offscreen_;
