@@ -16,9 +16,10 @@ Status createAll(const Device& device, VkRenderPass renderPass, const TargetForm
     CETVIEW_TRY(color);
     a.color = *color;
   }
-  auto depth = createImage(device, extent, format.depth,
-                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                           format.samples, VK_IMAGE_ASPECT_DEPTH_BIT);
+  auto depth =
+      createImage(device, extent, format.depth,
+                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                  format.samples, VK_IMAGE_ASPECT_DEPTH_BIT);
   CETVIEW_TRY(depth);
   a.depth = *depth;
 
@@ -40,8 +41,9 @@ Status createAll(const Device& device, VkRenderPass renderPass, const TargetForm
 
 }  // namespace
 
-Result<Attachments> createAttachments(const Device& device, VkRenderPass renderPass, const TargetFormat& format,
-                                      VkExtent2D extent, const std::vector<VkImageView>& outputs) {
+Result<Attachments> createAttachments(const Device& device, VkRenderPass renderPass,
+                                      const TargetFormat& format, VkExtent2D extent,
+                                      const std::vector<VkImageView>& outputs) {
   Attachments a;
   Status status = createAll(device, renderPass, format, extent, outputs, a);
   if (!status) {

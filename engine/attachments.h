@@ -21,8 +21,9 @@ struct Attachments {
 };
 
 // Errors: as createImage(), kVulkan.
-Result<Attachments> createAttachments(const Device& device, VkRenderPass renderPass, const TargetFormat& format,
-                                      VkExtent2D extent, const std::vector<VkImageView>& outputs);
+Result<Attachments> createAttachments(const Device& device, VkRenderPass renderPass,
+                                      const TargetFormat& format, VkExtent2D extent,
+                                      const std::vector<VkImageView>& outputs);
 void destroyAttachments(const Device& device, Attachments& attachments);
 
 }  // namespace cetview::engine

@@ -33,40 +33,57 @@ std::array<glm::vec3, 8> corners(const Bounds& b) {
 
 glm::vec3 viewDirection(StandardView view) {
   switch (view) {
-    case StandardView::kIso: return glm::normalize(glm::vec3(-1.0f, 1.0f, -1.0f));  // from +x, -y, +z
-    case StandardView::kFront: return {0.0f, 1.0f, 0.0f};
-    case StandardView::kBack: return {0.0f, -1.0f, 0.0f};
-    case StandardView::kLeft: return {1.0f, 0.0f, 0.0f};
-    case StandardView::kRight: return {-1.0f, 0.0f, 0.0f};
-    case StandardView::kTop: return {0.0f, 0.0f, -1.0f};
-    case StandardView::kBottom: return {0.0f, 0.0f, 1.0f};
+    case StandardView::kIso:
+      return glm::normalize(glm::vec3(-1.0f, 1.0f, -1.0f));  // from +x, -y, +z
+    case StandardView::kFront:
+      return {0.0f, 1.0f, 0.0f};
+    case StandardView::kBack:
+      return {0.0f, -1.0f, 0.0f};
+    case StandardView::kLeft:
+      return {1.0f, 0.0f, 0.0f};
+    case StandardView::kRight:
+      return {-1.0f, 0.0f, 0.0f};
+    case StandardView::kTop:
+      return {0.0f, 0.0f, -1.0f};
+    case StandardView::kBottom:
+      return {0.0f, 0.0f, 1.0f};
   }
   return {0.0f, 1.0f, 0.0f};
 }
 
 glm::vec3 viewUp(StandardView view) {
   switch (view) {
-    case StandardView::kTop: return {0.0f, 1.0f, 0.0f};
-    case StandardView::kBottom: return {0.0f, -1.0f, 0.0f};
+    case StandardView::kTop:
+      return {0.0f, 1.0f, 0.0f};
+    case StandardView::kBottom:
+      return {0.0f, -1.0f, 0.0f};
     case StandardView::kIso: {
       // World Z with its component along the view direction removed.
       glm::vec3 d = viewDirection(view);
       glm::vec3 z(0.0f, 0.0f, 1.0f);
       return glm::normalize(z - d * glm::dot(z, d));
     }
-    default: return {0.0f, 0.0f, 1.0f};
+    default:
+      return {0.0f, 0.0f, 1.0f};
   }
 }
 
 const char* viewName(StandardView view) {
   switch (view) {
-    case StandardView::kIso: return "iso";
-    case StandardView::kFront: return "front";
-    case StandardView::kBack: return "back";
-    case StandardView::kLeft: return "left";
-    case StandardView::kRight: return "right";
-    case StandardView::kTop: return "top";
-    case StandardView::kBottom: return "bottom";
+    case StandardView::kIso:
+      return "iso";
+    case StandardView::kFront:
+      return "front";
+    case StandardView::kBack:
+      return "back";
+    case StandardView::kLeft:
+      return "left";
+    case StandardView::kRight:
+      return "right";
+    case StandardView::kTop:
+      return "top";
+    case StandardView::kBottom:
+      return "bottom";
   }
   return "iso";
 }
@@ -100,7 +117,7 @@ void fitToBounds(Camera& camera, const Bounds& bounds, float aspect, float margi
 
   float tanY = std::tan(0.5f * camera.fovY);
   float tanX = tanY * aspect;
-  float needed = 0.0f;     // perspective: smallest distance that shows every corner
+  float needed = 0.0f;      // perspective: smallest distance that shows every corner
   float halfHeight = 0.0f;  // orthographic: half of the visible height
   float closest = 0.0f;     // most negative depth offset of a corner (towards the eye)
   for (const glm::vec3& c : corners(box)) {

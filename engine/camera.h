@@ -21,12 +21,12 @@ enum class Projection { kPerspective, kOrthographic };
 enum class StandardView { kIso, kFront, kBack, kLeft, kRight, kTop, kBottom };
 
 struct Camera {
-  glm::vec3 target{0.0f};                // the point looked at (and orbited about)
+  glm::vec3 target{0.0f};                 // the point looked at (and orbited about)
   glm::vec3 direction{0.0f, 1.0f, 0.0f};  // unit vector from the eye towards the target
   glm::vec3 up{0.0f, 0.0f, 1.0f};         // unit, perpendicular to direction
   float distance = 10.0f;                 // eye = target - direction * distance
   Projection projection = Projection::kPerspective;
-  float fovY = 0.5235988f;  // perspective: vertical field of view in radians (30 degrees)
+  float fovY = 0.5235988f;    // perspective: vertical field of view in radians (30 degrees)
   float orthoHeight = 10.0f;  // orthographic: visible height in world units
   float nearPlane = 0.1f;     // > 0 for perspective
   float farPlane = 100.0f;

@@ -15,11 +15,11 @@ namespace cetview::engine {
 
 // What device selection needs to know about one VkPhysicalDevice.
 struct DeviceCandidate {
-  std::string name;                                     // VkPhysicalDeviceProperties::deviceName
+  std::string name;  // VkPhysicalDeviceProperties::deviceName
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
-  std::uint32_t apiVersion = 0;                         // VkPhysicalDeviceProperties::apiVersion
-  bool hasGraphicsQueue = false;                        // a queue family with VK_QUEUE_GRAPHICS_BIT
-  bool canPresent = false;  // that family can present to the caller's surface (ignored without one)
+  std::uint32_t apiVersion = 0;   // VkPhysicalDeviceProperties::apiVersion
+  bool hasGraphicsQueue = false;  // a queue family with VK_QUEUE_GRAPHICS_BIT
+  bool canPresent = false;        // that family can present to the caller's surface (ignored without one)
 };
 
 // Lower is preferred: discrete, integrated, virtual, other, then CPU (lavapipe, the fallback).

@@ -5,7 +5,9 @@
 
 namespace cetview::engine {
 
-glm::vec3 keyLightInView() { return glm::normalize(glm::vec3(-0.45f, 0.65f, 0.62f)); }
+glm::vec3 keyLightInView() {
+  return glm::normalize(glm::vec3(-0.45f, 0.65f, 0.62f));
+}
 
 FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& style) {
   FrameView v;

@@ -20,8 +20,8 @@ constexpr VkDeviceSize kMinTableEntries = 256;
 
 GpuScene::GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options)
     : device_(device), scene_(scene), options_(options) {
-  indirect_ = options.indirectDraws && device.features.multiDrawIndirect &&
-              device.features.drawIndirectFirstInstance;
+  indirect_ =
+      options.indirectDraws && device.features.multiDrawIndirect && device.features.drawIndirectFirstInstance;
 }
 
 Result<std::unique_ptr<GpuScene>> GpuScene::create(const Device& device, Scene& scene,
@@ -78,7 +78,8 @@ Status GpuScene::reserve(Target t, VkDeviceSize bytes, VkDeviceSize keepBytes) {
   size = (size + 255) / 256 * 256;
   auto buffer = createBuffer(device_, size, g.usage, MemoryUse::kDeviceLocal);
   CETVIEW_TRY(buffer);
-  auto earlier = std::find_if(growths_.begin(), growths_.end(), [t](const Growth& x) { return x.target == t; });
+  auto earlier =
+      std::find_if(growths_.begin(), growths_.end(), [t](const Growth& x) { return x.target == t; });
   if (earlier != growths_.end()) {
     // Grown twice in one frame: copy straight from the original buffer; the intermediate one was
     // never referenced by a command and goes at once.
@@ -98,12 +99,14 @@ Status GpuScene::growTables() {
     CETVIEW_TRY(reserve(kFaceDraws, sceneFaces * kFaceDrawSize, faceCount * kFaceDrawSize));
     CETVIEW_TRY(reserve(kFaceColors, sceneFaces * sizeof(std::uint32_t), faceCount * sizeof(std::uint32_t)));
     // New faces: no triangles (zero draw commands), their part's colour.
-    fills_.push_back(Fill{kFaceDraws, faceCount * kFaceDrawSize, (sceneFaces - faceCount) * kFaceDrawSize, 0u});
+    fills_.push_back(
+        Fill{kFaceDraws, faceCount * kFaceDrawSize, (sceneFaces - faceCount) * kFaceDrawSize, 0u});
     for (const Scene::Part& part : scene_.parts_) {
       std::uint32_t begin = std::max(part.firstFace, faceCount);
       std::uint32_t end = part.firstFace + part.faceCount;
       if (begin >= end) continue;
-      fills_.push_back(Fill{kFaceColors, begin * VkDeviceSize{4}, (end - begin) * VkDeviceSize{4}, packColor(part.color)});
+      fills_.push_back(
+          Fill{kFaceColors, begin * VkDeviceSize{4}, (end - begin) * VkDeviceSize{4}, packColor(part.color)});
     }
     faces_.resize(sceneFaces);
   }
@@ -111,7 +114,8 @@ Status GpuScene::growTables() {
   std::uint32_t sceneEdges = scene_.edgeCount();
   if (sceneEdges > edgeCount) {
     CETVIEW_TRY(reserve(kEdgeDraws, sceneEdges * kEdgeDrawSize, edgeCount * kEdgeDrawSize));
-    fills_.push_back(Fill{kEdgeDraws, edgeCount * kEdgeDrawSize, (sceneEdges - edgeCount) * kEdgeDrawSize, 0u});
+    fills_.push_back(
+        Fill{kEdgeDraws, edgeCount * kEdgeDrawSize, (sceneEdges - edgeCount) * kEdgeDrawSize, 0u});
     edges_.resize(sceneEdges);
   }
   return {};
@@ -195,10 +199,12 @@ Status GpuScene::uploadVertices() {
   std::uint64_t total = scene_.vertices_.size();
   if (uploaded == total) return {};
   // Whole 16-byte units of budget, so the aligned charge never exceeds what is left.
-  std::uint64_t count = std::min<std::uint64_t>(total - uploaded, (remaining_ & ~std::uint64_t{15}) / sizeof(MeshVertex));
+  std::uint64_t count =
+      std::min<std::uint64_t>(total - uploaded, (remaining_ & ~std::uint64_t{15}) / sizeof(MeshVertex));
   if (count == 0) return {};
   CETVIEW_TRY(reserve(kVertices, (uploaded + count) * sizeof(MeshVertex), uploaded * sizeof(MeshVertex)));
-  if (!stage(kVertices, uploaded * sizeof(MeshVertex), &scene_.vertices_[uploaded], count * sizeof(MeshVertex))) {
+  if (!stage(kVertices, uploaded * sizeof(MeshVertex), &scene_.vertices_[uploaded],
+             count * sizeof(MeshVertex))) {
     return {};
   }
   scene_.uploadedVertices_ = static_cast<std::uint32_t>(uploaded + count);
@@ -227,7 +233,8 @@ Status GpuScene::uploadFaces() {
     std::uint64_t n = face.pending.size();
 
     if (!slot.uploading || slot.serial != face.serial) {
-      if (slot.uploading && !slot.inPlace) indexSlots_.free(slot.newOffset, slot.newCapacity);  // replaced mid-upload
+      if (slot.uploading && !slot.inPlace)
+        indexSlots_.free(slot.newOffset, slot.newCapacity);  // replaced mid-upload
       // In place only when this frame can finish it: a committed slot is never left half new.
       slot.inPlace = n == 0 || (n <= slot.capacity && finalCost(n * kIndexSize, kFaceDrawSize) <= remaining_);
       if (slot.inPlace) {
@@ -237,7 +244,8 @@ Status GpuScene::uploadFaces() {
         auto offset = indexSlots_.allocate(n);
         if (!offset) {
           std::uint64_t capacity = indexSlots_.capacity();
-          CETVIEW_TRY(reserve(kIndices, std::max(capacity * 2, capacity + n) * kIndexSize, capacity * kIndexSize));
+          CETVIEW_TRY(
+              reserve(kIndices, std::max(capacity * 2, capacity + n) * kIndexSize, capacity * kIndexSize));
           indexSlots_.grow(buffers_[kIndices].buffer.size / kIndexSize);
           offset = indexSlots_.allocate(n);
         }
@@ -300,7 +308,8 @@ Status GpuScene::uploadEdges() {
 
     if (!slot.uploading || slot.serial != edge.serial) {
       if (slot.uploading && !slot.inPlace) edgeSlots_.free(slot.newOffset, slot.newCapacity);
-      slot.inPlace = n == 0 || (n <= slot.capacity && finalCost(n * kEdgePointSize, kEdgeDrawSize) <= remaining_);
+      slot.inPlace =
+          n == 0 || (n <= slot.capacity && finalCost(n * kEdgePointSize, kEdgeDrawSize) <= remaining_);
       if (slot.inPlace) {
         slot.newOffset = slot.offset;
         slot.newCapacity = slot.capacity;
@@ -337,8 +346,8 @@ Status GpuScene::uploadEdges() {
     draw.firstVertex = static_cast<std::uint32_t>(slot.newOffset);
     draw.firstInstance = id;
     Piece command{kEdgeDraws, id * kEdgeDrawSize, &draw, sizeof(draw)};
-    Piece last{kEdgePoints, (slot.newOffset + slot.done) * kEdgePointSize, edge.pending.data() + 3 * slot.done,
-               left * kEdgePointSize};
+    Piece last{kEdgePoints, (slot.newOffset + slot.done) * kEdgePointSize,
+               edge.pending.data() + 3 * slot.done, left * kEdgePointSize};
     if (!stage({command, last})) {
       if (slot.inPlace) slot.uploading = false;
       return {};
@@ -391,7 +400,8 @@ Status GpuScene::recordUploads(VkCommandBuffer cmd, UploadRing& ring, std::uint6
 }
 
 void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
-  bool anyCopy = std::any_of(std::begin(copies_), std::end(copies_), [](const auto& c) { return !c.empty(); });
+  bool anyCopy =
+      std::any_of(std::begin(copies_), std::end(copies_), [](const auto& c) { return !c.empty(); });
   if (growths_.empty() && fills_.empty() && !anyCopy) return;
 
   // Earlier frames' reads and transfers finish before this frame's transfers touch the buffers.
@@ -412,13 +422,13 @@ void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
     if (f.size > 0) vkCmdFillBuffer(cmd, buffers_[f.target].buffer.buffer, f.offset, f.size, f.value);
   }
   if (!growths_.empty() || !fills_.empty()) {
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
   }
   for (int t = 0; t < kTargetCount; ++t) {
     if (copies_[t].empty()) continue;
-    vkCmdCopyBuffer(cmd, ring_->buffer(), buffers_[t].buffer.buffer, static_cast<std::uint32_t>(copies_[t].size()),
-                    copies_[t].data());
+    vkCmdCopyBuffer(cmd, ring_->buffer(), buffers_[t].buffer.buffer,
+                    static_cast<std::uint32_t>(copies_[t].size()), copies_[t].data());
     copies_[t].clear();
   }
   memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
@@ -442,8 +452,8 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     if (!instance.visible) continue;
     const Scene::Part& part = scene_.parts_[instance.part];
     // Only faces this GpuScene already knows (tables grow at the start of each upload).
-    std::uint32_t end = std::min<std::uint32_t>(part.firstFace + part.faceCount,
-                                                static_cast<std::uint32_t>(faces_.size()));
+    std::uint32_t end =
+        std::min<std::uint32_t>(part.firstFace + part.faceCount, static_cast<std::uint32_t>(faces_.size()));
     if (part.firstFace >= end) continue;
     // A mirroring transform turns counter-clockwise triangles clockwise: no culling then.
     bool cull = part.closedSolid && glm::determinant(glm::mat3(instance.transform)) > 0.0f;
@@ -465,7 +475,8 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       for (std::uint32_t f = part.firstFace; f < end; ++f) {
         const FaceSlot& slot = faces_[f];
         if (slot.count == 0 || !scene_.faces_[f].visible) continue;
-        vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(slot.count), 1, static_cast<std::uint32_t>(slot.offset), 0, f);
+        vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(slot.count), 1,
+                         static_cast<std::uint32_t>(slot.offset), 0, f);
       }
     }
   }
@@ -478,8 +489,8 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
   for (const Scene::Instance& instance : scene_.instances_) {
     if (!instance.visible) continue;
     const Scene::Part& part = scene_.parts_[instance.part];
-    std::uint32_t end = std::min<std::uint32_t>(part.firstEdge + part.edgeCount,
-                                                static_cast<std::uint32_t>(edges_.size()));
+    std::uint32_t end =
+        std::min<std::uint32_t>(part.firstEdge + part.edgeCount, static_cast<std::uint32_t>(edges_.size()));
     if (part.firstEdge >= end) continue;
     DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,

@@ -42,12 +42,12 @@ struct GpuSceneOptions {
 
 // What one frame's upload did.
 struct UploadStats {
-  std::uint64_t bytes = 0;            // copied through the upload ring
-  std::uint32_t vertices = 0;         // appended vertices uploaded
-  std::uint32_t facesCompleted = 0;   // faces whose new index array is drawn from this frame on
+  std::uint64_t bytes = 0;           // copied through the upload ring
+  std::uint32_t vertices = 0;        // appended vertices uploaded
+  std::uint32_t facesCompleted = 0;  // faces whose new index array is drawn from this frame on
   std::uint32_t edgesCompleted = 0;
-  std::uint32_t bufferGrowths = 0;    // device buffers replaced by larger ones
-  bool workLeft = false;              // the budget (or ring) ran out with changes still waiting
+  std::uint32_t bufferGrowths = 0;  // device buffers replaced by larger ones
+  bool workLeft = false;            // the budget (or ring) ran out with changes still waiting
 };
 
 class GpuScene {
@@ -69,8 +69,8 @@ class GpuScene {
   // Inside a render pass: every visible face of every visible instance, with `culled` for
   // instances of closed solids that are not mirrored and `twoSided` for the rest (both mesh.vert
   // pipelines; they may be the same). Binds the pipelines itself.
-  void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view, VkPipeline twoSided,
-                       VkPipeline culled) const;
+  void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
+                       VkPipeline twoSided, VkPipeline culled) const;
   // Inside a render pass with the edge pipeline bound: every edge of every visible instance.
   void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const;
 
@@ -100,10 +100,10 @@ class GpuScene {
   struct FaceSlot {
     std::uint64_t offset = 0, capacity = 0, count = 0;  // committed: drawn from
     bool uploading = false;
-    bool inPlace = false;                               // the upload overwrites the committed slot
-    std::uint64_t serial = 0;                           // Scene::Face::serial being uploaded
+    bool inPlace = false;      // the upload overwrites the committed slot
+    std::uint64_t serial = 0;  // Scene::Face::serial being uploaded
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
-    std::uint64_t drawWrittenFrame = 0;                 // frame whose copies already hold its draw
+    std::uint64_t drawWrittenFrame = 0;  // frame whose copies already hold its draw
     std::uint64_t drawRingOffset = 0;
   };
   struct EdgeSlot {

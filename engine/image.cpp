@@ -6,7 +6,8 @@
 namespace cetview::engine {
 
 Status writePng(const RgbaImage& image, const std::string& path) {
-  if (image.width == 0 || image.height == 0 || image.pixels.size() != std::size_t{image.width} * image.height * 4) {
+  if (image.width == 0 || image.height == 0 ||
+      image.pixels.size() != std::size_t{image.width} * image.height * 4) {
     return makeError(ErrorCode::kInvalidArgument, "cannot write an empty or malformed image to " + path);
   }
   int ok = stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 4,

@@ -15,7 +15,9 @@ struct RgbaImage {
   std::uint32_t height = 0;
   std::vector<std::uint8_t> pixels;  // width * height * 4 bytes
 
-  const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const { return &pixels[(std::size_t{y} * width + x) * 4]; }
+  const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const {
+    return &pixels[(std::size_t{y} * width + x) * 4];
+  }
   std::uint8_t* at(std::uint32_t x, std::uint32_t y) { return &pixels[(std::size_t{y} * width + x) * 4]; }
 };
 

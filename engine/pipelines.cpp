@@ -131,7 +131,8 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
 
   VkVertexInputBindingDescription binding{0, 0, VK_VERTEX_INPUT_RATE_VERTEX};
   std::array<VkVertexInputAttributeDescription, 2> attributes{};
-  auto vertexInput = vkInit<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+  auto vertexInput =
+      vkInit<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
   if (desc.input == PipelineDesc::Input::kMesh) {
     binding.stride = sizeof(MeshVertex);
     attributes[0] = {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)};
@@ -149,14 +150,17 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
     vertexInput.pVertexAttributeDescriptions = attributes.data();
   }
 
-  auto assembly = vkInit<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+  auto assembly = vkInit<VkPipelineInputAssemblyStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
   assembly.topology = desc.topology;
 
-  auto viewport = vkInit<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+  auto viewport =
+      vkInit<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
   viewport.viewportCount = 1;
   viewport.scissorCount = 1;
 
-  auto raster = vkInit<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+  auto raster = vkInit<VkPipelineRasterizationStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
   raster.polygonMode = desc.polygonMode;
   // CAD faces have no reliable winding in general; lighting is two-sided. Closed solids promise
   // counter-clockwise outsides (Scene::addPart) and drop their back faces early.
@@ -167,23 +171,27 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
   raster.depthBiasConstantFactor = 1.0f;
   raster.depthBiasSlopeFactor = 1.0f;
 
-  auto multisample = vkInit<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+  auto multisample =
+      vkInit<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
   multisample.rasterizationSamples = format.samples;
 
-  auto depth = vkInit<VkPipelineDepthStencilStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+  auto depth = vkInit<VkPipelineDepthStencilStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
   depth.depthTestEnable = desc.depthTest ? VK_TRUE : VK_FALSE;
   depth.depthWriteEnable = desc.depthWrite ? VK_TRUE : VK_FALSE;
   depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
 
   VkPipelineColorBlendAttachmentState blendAttachment{};
-  blendAttachment.colorWriteMask =
-      VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  auto blend = vkInit<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  auto blend =
+      vkInit<VkPipelineColorBlendStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
   blend.attachmentCount = 1;
   blend.pAttachments = &blendAttachment;
 
   std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  auto dynamic = vkInit<VkPipelineDynamicStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+  auto dynamic =
+      vkInit<VkPipelineDynamicStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
   dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamicStates.size());
   dynamic.pDynamicStates = dynamicStates.data();
 
@@ -209,11 +217,7 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
   return pipeline;
 }
 
-Status createAll(const Device& device, const TargetFormat& format, Pipelines& p) {
-  auto renderPass = createRenderPass(device, format);
-  CETVIEW_TRY(renderPass);
-  p.renderPass = *renderPass;
-
+Status createLayouts(const Device& device, Pipelines& p) {
   constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
   bindings[0] = {CETVIEW_BINDING_GLOBALS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kStages, nullptr};
@@ -230,12 +234,20 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
   layoutInfo.pushConstantRangeCount = 1;
   layoutInfo.pPushConstantRanges = &push;
   CETVIEW_VK(vkCreatePipelineLayout(device.device, &layoutInfo, nullptr, &p.layout));
+  return {};
+}
+
+// The render pass and every pipeline; the layouts must exist.
+Status createPassAndPipelines(const Device& device, const TargetFormat& format, Pipelines& p) {
+  auto renderPass = createRenderPass(device, format);
+  CETVIEW_TRY(renderPass);
+  p.renderPass = *renderPass;
 
   using Input = PipelineDesc::Input;
   constexpr auto kTriangles = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   auto background = createPipeline(device, p, format,
-                                   {ShaderId::kBackgroundVert, ShaderId::kBackgroundFrag, Input::kNone, kTriangles,
-                                    VK_POLYGON_MODE_FILL, false, false, false});
+                                   {ShaderId::kBackgroundVert, ShaderId::kBackgroundFrag, Input::kNone,
+                                    kTriangles, VK_POLYGON_MODE_FILL, false, false, false});
   CETVIEW_TRY(background);
   p.background = *background;
   auto shaded = createPipeline(device, p, format,
@@ -243,8 +255,14 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
                                 VK_POLYGON_MODE_FILL, true, true, true});
   CETVIEW_TRY(shaded);
   p.shaded = *shaded;
-  PipelineDesc culledDesc{ShaderId::kMeshVert, ShaderId::kMeshFrag, Input::kMesh, kTriangles,
-                          VK_POLYGON_MODE_FILL, true, true, true};
+  PipelineDesc culledDesc{ShaderId::kMeshVert,
+                          ShaderId::kMeshFrag,
+                          Input::kMesh,
+                          kTriangles,
+                          VK_POLYGON_MODE_FILL,
+                          true,
+                          true,
+                          true};
   culledDesc.cullBack = true;
   auto shadedCulled = createPipeline(device, p, format, culledDesc);
   CETVIEW_TRY(shadedCulled);
@@ -264,11 +282,23 @@ Status createAll(const Device& device, const TargetFormat& format, Pipelines& p)
   return {};
 }
 
+
+// Destroys the render pass and the pipelines, keeping the layouts.
+void destroyPassAndPipelines(const Device& device, Pipelines& p) {
+  for (VkPipeline* pipeline : {&p.background, &p.shaded, &p.shadedCulled, &p.wireframe, &p.edges}) {
+    if (*pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.device, *pipeline, nullptr);
+    *pipeline = VK_NULL_HANDLE;
+  }
+  if (p.renderPass != VK_NULL_HANDLE) vkDestroyRenderPass(device.device, p.renderPass, nullptr);
+  p.renderPass = VK_NULL_HANDLE;
+}
+
 }  // namespace
 
 Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format) {
   Pipelines p;
-  Status status = createAll(device, format, p);
+  Status status = createLayouts(device, p);
+  if (status) status = createPassAndPipelines(device, format, p);
   if (!status) {
     destroyPipelines(device, p);
     return status.error();
@@ -276,13 +306,15 @@ Result<Pipelines> createPipelines(const Device& device, const TargetFormat& form
   return p;
 }
 
+Status recreatePipelines(const Device& device, const TargetFormat& format, Pipelines& p) {
+  destroyPassAndPipelines(device, p);
+  return createPassAndPipelines(device, format, p);
+}
+
 void destroyPipelines(const Device& device, Pipelines& p) {
-  for (VkPipeline pipeline : {p.background, p.shaded, p.shadedCulled, p.wireframe, p.edges}) {
-    if (pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device.device, pipeline, nullptr);
-  }
+  destroyPassAndPipelines(device, p);
   if (p.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device.device, p.layout, nullptr);
   if (p.setLayout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device.device, p.setLayout, nullptr);
-  if (p.renderPass != VK_NULL_HANDLE) vkDestroyRenderPass(device.device, p.renderPass, nullptr);
   p = Pipelines{};
 }
 
@@ -310,8 +342,10 @@ bool isSrgbFormat(VkFormat format) {
     case VK_FORMAT_B8G8R8A8_SRGB:
     case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
     case VK_FORMAT_R8G8B8_SRGB:
-    case VK_FORMAT_B8G8R8_SRGB: return true;
-    default: return false;
+    case VK_FORMAT_B8G8R8_SRGB:
+      return true;
+    default:
+      return false;
   }
 }
 

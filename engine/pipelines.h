@@ -27,12 +27,15 @@ struct Pipelines {
   VkPipeline background = VK_NULL_HANDLE;
   VkPipeline shaded = VK_NULL_HANDLE;        // two-sided
   VkPipeline shadedCulled = VK_NULL_HANDLE;  // back faces culled: closed solids only
-  VkPipeline wireframe = VK_NULL_HANDLE;  // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
+  VkPipeline wireframe = VK_NULL_HANDLE;     // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
   VkPipeline edges = VK_NULL_HANDLE;
 };
 
 // Errors: kVulkan, kOutOfMemory.
 Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format);
+// For a new target format: a new render pass and pipelines; the descriptor set layout and the
+// pipeline layout stay, so descriptor sets allocated with them stay valid and updatable.
+Status recreatePipelines(const Device& device, const TargetFormat& format, Pipelines& pipelines);
 void destroyPipelines(const Device& device, Pipelines& pipelines);
 
 // Depth formats in order of preference that the device can attach: D32, D24S8, D16.

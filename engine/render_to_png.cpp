@@ -6,9 +6,12 @@
 
 namespace cetview::engine {
 
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "edge polylines are passed as packed xyz floats");
+
 Result<PartRange> addMesh(Scene& scene, const MeshData& mesh) {
-  PartRange range = scene.addPart(static_cast<std::uint32_t>(mesh.faces.size()),
-                                  static_cast<std::uint32_t>(mesh.edges.size()), kDefaultFaceColor, mesh.closedSolid);
+  PartRange range =
+      scene.addPart(static_cast<std::uint32_t>(mesh.faces.size()),
+                    static_cast<std::uint32_t>(mesh.edges.size()), kDefaultFaceColor, mesh.closedSolid);
   std::uint32_t base = scene.appendVertices(mesh.vertices.data(), mesh.vertices.size());
   std::vector<std::uint32_t> shifted;
   for (std::uint32_t i = 0; i < range.faceCount; ++i) {
@@ -20,7 +23,7 @@ Result<PartRange> addMesh(Scene& scene, const MeshData& mesh) {
   }
   for (std::uint32_t i = 0; i < range.edgeCount; ++i) {
     const auto& points = mesh.edges[i];
-    CETVIEW_TRY(scene.setEdgePolyline(range.edge(i), &points[0].x, points.size()));
+    CETVIEW_TRY(scene.setEdgePolyline(range.edge(i), points.empty() ? nullptr : &points[0].x, points.size()));
   }
   auto instance = scene.addInstance(range.part);
   CETVIEW_TRY(instance);

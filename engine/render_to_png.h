@@ -27,7 +27,7 @@ struct MeshData {
   std::vector<MeshVertex> vertices;
   std::vector<MeshFace> faces;
   std::vector<std::vector<glm::vec3>> edges;  // B-rep edges as polylines
-  bool closedSolid = false;                    // see Scene::addPart()
+  bool closedSolid = false;                   // see Scene::addPart()
 };
 
 // Adds `mesh` to `scene` as one part with one identity instance; face i is range.face(i).
@@ -40,7 +40,7 @@ struct RenderOptions {
   StandardView view = StandardView::kIso;
   Projection projection = Projection::kPerspective;
   ViewStyle style;
-  std::string deviceName;  // substring of the device name; empty: best device (lavapipe last)
+  std::string deviceName;   // substring of the device name; empty: best device (lavapipe last)
   bool validation = false;  // VK_LAYER_KHRONOS_validation; a missing layer or any report is an error
   std::uint32_t msaaSamples = 4;
 };

@@ -24,11 +24,14 @@ Result<VkFormat> chooseOffscreenFormat(const Device& device) {
   return makeError(ErrorCode::kUnsupported, "the device cannot render to any 8-bit RGBA format");
 }
 
-bool isBgr(VkFormat format) { return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_B8G8R8A8_UNORM; }
+bool isBgr(VkFormat format) {
+  return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_B8G8R8A8_UNORM;
+}
 
 }  // namespace
 
-Renderer::Renderer(const Device& device, const RendererOptions& options) : device_(device), options_(options) {
+Renderer::Renderer(const Device& device, const RendererOptions& options)
+    : device_(device), options_(options) {
   options_.framesInFlight = std::clamp<std::uint32_t>(options_.framesInFlight, 1, 4);
   options_.uploadBudgetBytes = std::clamp<std::uint64_t>(options_.uploadBudgetBytes, 64u << 10, 512u << 20);
   if (options_.msaaSamples == 0) {
@@ -96,7 +99,8 @@ Status Renderer::createCommon() {
 
 Status Renderer::createFrames() {
   std::uint32_t n = options_.framesInFlight;
-  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n}};
+  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n},
+                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n}};
   auto poolInfo = vkInit<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
   poolInfo.maxSets = n;
   poolInfo.poolSizeCount = 2;
@@ -119,7 +123,8 @@ Status Renderer::createFrames() {
     CETVIEW_VK(vkCreateFence(device_.device, &fence, nullptr, &f.fence));
     auto semaphore = vkInit<VkSemaphoreCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO);
     CETVIEW_VK(vkCreateSemaphore(device_.device, &semaphore, nullptr, &f.acquired));
-    auto globals = createBuffer(device_, sizeof(Globals), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::kUpload);
+    auto globals =
+        createBuffer(device_, sizeof(Globals), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::kUpload);
     CETVIEW_TRY(globals);
     f.globals = *globals;
     auto setInfo = vkInit<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
@@ -203,14 +208,17 @@ Status Renderer::recreateSwapchain(VkExtent2D framebuffer, bool* minimised) {
   ++recreations_;
 
   if (format->format != format_.color) {
-    // The pipelines are compiled against the render pass's format.
-    destroyPipelines(device_, pipelines_);
+    // The pipelines are compiled against the render pass's format. After a failure the format is
+    // left unknown, so the next recreation tries again instead of drawing with no pipelines.
     format_.color = format->format;
-    auto pipelines = createPipelines(device_, format_);
-    CETVIEW_TRY(pipelines);
-    pipelines_ = *pipelines;
+    Status pipelines = recreatePipelines(device_, format_, pipelines_);
+    if (!pipelines) {
+      format_.color = VK_FORMAT_UNDEFINED;
+      return pipelines.error();
+    }
   }
-  auto attachments = createAttachments(device_, pipelines_.renderPass, format_, swapchain_.extent, swapchain_.views);
+  auto attachments =
+      createAttachments(device_, pipelines_.renderPass, format_, swapchain_.extent, swapchain_.views);
   CETVIEW_TRY(attachments);
   attachments_ = *attachments;
   for (std::size_t i = 0; i < swapchain_.images.size(); ++i) {
@@ -228,7 +236,8 @@ Status Renderer::recreateSwapchain(VkExtent2D framebuffer, bool* minimised) {
 Result<bool> Renderer::prepareSwapchain() {
   VkExtent2D framebuffer = framebufferSize_();
   if (framebuffer.width == 0 || framebuffer.height == 0) return false;  // minimised
-  bool resized = framebuffer.width != swapchainFramebuffer_.width || framebuffer.height != swapchainFramebuffer_.height;
+  bool resized =
+      framebuffer.width != swapchainFramebuffer_.width || framebuffer.height != swapchainFramebuffer_.height;
   if (!needRecreate_ && !resized && swapchain_.swapchain != VK_NULL_HANDLE) return true;
   bool minimised = false;
   CETVIEW_TRY(recreateSwapchain(framebuffer, &minimised));
@@ -288,11 +297,13 @@ void Renderer::recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const C
   begin.pClearValues = clears;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
 
-  VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent_.width), static_cast<float>(extent_.height), 0.0f, 1.0f};
+  VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent_.width), static_cast<float>(extent_.height),
+                      0.0f, 1.0f};
   VkRect2D scissor{{0, 0}, extent_};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &frame.set, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout, 0, 1, &frame.set, 0,
+                          nullptr);
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.background);
   vkCmdDraw(cmd, 3, 1, 0, 0);
@@ -306,12 +317,14 @@ void Renderer::recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const C
       gpuScene_->recordEdgeDraws(cmd, pipelines_.layout, view);
     }
   }
+  if (overlay_) overlay_(cmd);
   vkCmdEndRenderPass(cmd);
 }
 
 Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* style, bool capture) {
   if (style && style->mode == DisplayMode::kWireframe && pipelines_.wireframe == VK_NULL_HANDLE) {
-    return makeError(ErrorCode::kUnsupported, "wireframe needs fillModeNonSolid, which '" + device_.name + "' lacks");
+    return makeError(ErrorCode::kUnsupported,
+                     "wireframe needs fillModeNonSolid, which '" + device_.name + "' lacks");
   }
   Frame& frame = frames_[frameIndex_ % frames_.size()];
   CETVIEW_TRY(waitForFrame(frame));
@@ -325,8 +338,8 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
     CETVIEW_TRY(ready);
     VkResult r = VK_ERROR_OUT_OF_DATE_KHR;
     if (*ready) {
-      r = vkAcquireNextImageKHR(device_.device, swapchain_.swapchain, UINT64_MAX, frame.acquired, VK_NULL_HANDLE,
-                                &imageIndex);
+      r = vkAcquireNextImageKHR(device_.device, swapchain_.swapchain, UINT64_MAX, frame.acquired,
+                                VK_NULL_HANDLE, &imageIndex);
       if (r == VK_ERROR_OUT_OF_DATE_KHR) needRecreate_ = true;
     }
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
@@ -347,7 +360,8 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
 
   std::uint64_t serial = ++serial_;
   std::vector<Buffer> retired;
-  Status uploaded = gpuScene_->recordUploads(frame.cmd, ring_, options_.uploadBudgetBytes, retired, &lastUpload_);
+  Status uploaded =
+      gpuScene_->recordUploads(frame.cmd, ring_, options_.uploadBudgetBytes, retired, &lastUpload_);
   for (Buffer& b : retired) retired_.emplace_back(serial, b);
   frame.serial = serial;
   frame.ringMark = ring_.mark();
@@ -364,16 +378,16 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageExtent = {extent_.width, extent_.height, 1};
-      vkCmdCopyImageToBuffer(frame.cmd, offscreen_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
-                             &region);
+      vkCmdCopyImageToBuffer(frame.cmd, offscreen_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             readback_.buffer, 1, &region);
       memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                     VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     }
   }
   CETVIEW_VK(vkEndCommandBuffer(frame.cmd));
 
-  VkPipelineStageFlags waitStage = present && render ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT
-                                                     : VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+  VkPipelineStageFlags waitStage =
+      present && render ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT : VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
   auto submit = vkInit<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &frame.cmd;

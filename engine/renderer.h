@@ -39,9 +39,9 @@ struct RendererOptions {
   std::uint32_t msaaSamples = 0;
   // Bytes uploaded per frame at most (64 KiB .. 512 MiB); bigger changes spread over frames.
   std::uint64_t uploadBudgetBytes = 16u << 20;
-  std::uint32_t framesInFlight = 2;              // 1..4
-  bool vsync = true;                             // window: FIFO; false: MAILBOX/IMMEDIATE when offered
-  GpuSceneOptions scene;                         // initial buffer sizes, indirect draws
+  std::uint32_t framesInFlight = 2;  // 1..4
+  bool vsync = true;                 // window: FIFO; false: MAILBOX/IMMEDIATE when offered
+  GpuSceneOptions scene;             // initial buffer sizes, indirect draws
 };
 
 enum class FrameStatus {
@@ -98,17 +98,29 @@ class Renderer {
   std::uint32_t swapchainRecreations() const { return recreations_; }
   const Device& device() const { return device_; }
 
+  // Extra drawing after the scene, inside the render pass of every rendered frame: the viewer
+  // records its ImGui draw data here (the engine knows nothing of ImGui). The callback gets the
+  // frame's command buffer with the render pass begun, viewport and scissor set to the whole
+  // target; it may bind its own pipelines, made for renderPass() with samples() samples.
+  // renderPass() stays the same for the renderer's life unless the window surface changes pixel
+  // format (then swapchainRecreations() has grown too). An empty function removes the overlay.
+  using OverlayFn = std::function<void(VkCommandBuffer)>;
+  void setOverlay(OverlayFn overlay) { overlay_ = std::move(overlay); }
+  VkRenderPass renderPass() const { return pipelines_.renderPass; }
+  // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.
+  std::uint32_t swapchainImageCount() const { return static_cast<std::uint32_t>(swapchain_.images.size()); }
+
  private:
   struct Frame {
     VkCommandPool pool = VK_NULL_HANDLE;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
     VkSemaphore acquired = VK_NULL_HANDLE;  // window: the swapchain image is ready
-    Buffer globals;                          // gpu::Globals, host-visible
+    Buffer globals;                         // gpu::Globals, host-visible
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkBuffer boundFaces = VK_NULL_HANDLE;  // the face colour buffer the set points at
-    std::uint64_t serial = 0;    // of the last submission that used this frame
-    std::uint64_t ringMark = 0;  // upload ring position after that submission
+    std::uint64_t serial = 0;              // of the last submission that used this frame
+    std::uint64_t ringMark = 0;            // upload ring position after that submission
   };
 
   Renderer(const Device& device, const RendererOptions& options);
@@ -124,7 +136,8 @@ class Renderer {
   Result<FrameStatus> runFrame(const Camera* camera, const ViewStyle* style, bool capture);
   void writeGlobals(Frame& frame, const ViewStyle& style);
   void updateDescriptors(Frame& frame);
-  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera, const ViewStyle& style);
+  void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera,
+                        const ViewStyle& style);
 
   const Device& device_;
   RendererOptions options_;
@@ -141,6 +154,7 @@ class Renderer {
   std::uint64_t serial_ = 0;
   std::deque<std::pair<std::uint64_t, Buffer>> retired_;  // (serial of the last frame using it, buffer)
   UploadStats lastUpload_;
+  OverlayFn overlay_;
 
   // Headless target.
   Image offscreen_;

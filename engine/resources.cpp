@@ -38,7 +38,8 @@ Result<VkDeviceMemory> allocate(const Device& device, const VkMemoryRequirements
 
 }  // namespace
 
-Result<Buffer> createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use) {
+Result<Buffer> createBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
+                            MemoryUse use) {
   Buffer result;
   result.size = size;
   auto info = vkInit<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
@@ -52,7 +53,9 @@ Result<Buffer> createBuffer(const Device& device, VkDeviceSize size, VkBufferUsa
   VkMemoryPropertyFlags required = 0;
   VkMemoryPropertyFlags preferred = 0;
   switch (use) {
-    case MemoryUse::kDeviceLocal: preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT; break;
+    case MemoryUse::kDeviceLocal:
+      preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+      break;
     case MemoryUse::kUpload:
       required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
       break;

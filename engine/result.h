@@ -34,7 +34,7 @@ struct Error {
 template <typename T>
 class [[nodiscard]] Result {
  public:
-  Result(T value) : state_(std::move(value)) {}  // NOLINT: implicit, so `return value;` works
+  Result(T value) : state_(std::move(value)) {}      // NOLINT: implicit, so `return value;` works
   Result(Error error) : state_(std::move(error)) {}  // NOLINT: implicit, so `return error;` works
 
   bool ok() const { return state_.index() == 0; }
@@ -85,13 +85,15 @@ class [[nodiscard]] Result<void> {
 
 using Status = Result<void>;
 
-inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message)}; }
+inline Error makeError(ErrorCode code, std::string message) {
+  return Error{code, std::move(message)};
+}
 
 }  // namespace cetview::engine
 
 // Propagates a failed Status/Result from an expression to the caller (whose return type is any Result).
-#define CETVIEW_TRY(expr)                                    \
-  do {                                                       \
-    auto&& cetview_try_result_ = (expr);                     \
+#define CETVIEW_TRY(expr)                                              \
+  do {                                                                 \
+    auto&& cetview_try_result_ = (expr);                               \
     if (!cetview_try_result_.ok()) return cetview_try_result_.error(); \
   } while (0)

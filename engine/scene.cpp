@@ -83,7 +83,8 @@ Status Scene::setFaceIndices(FaceId face, const std::uint32_t* indices, std::siz
   CETVIEW_TRY(checkFace(face));
   if (count % 3 != 0) {
     return makeError(ErrorCode::kInvalidArgument, "face " + std::to_string(toIndex(face)) + ": " +
-                                                      std::to_string(count) + " indices is not whole triangles");
+                                                      std::to_string(count) +
+                                                      " indices is not whole triangles");
   }
   Face& f = faces_[toIndex(face)];
   Part& part = parts_[f.part];
@@ -125,7 +126,8 @@ Status Scene::setEdgePolyline(EdgeId edge, const float* xyz, std::size_t pointCo
   for (std::size_t i = 0; i + 1 < pointCount; ++i) {
     e.pending.insert(e.pending.end(), xyz + 3 * i, xyz + 3 * i + 6);
   }
-  for (std::size_t i = 0; i < pointCount; ++i) part.bounds.add(glm::vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
+  for (std::size_t i = 0; i < pointCount; ++i)
+    part.bounds.add(glm::vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
   pendingEdgeBytes_ += e.pending.size() * sizeof(float);
   ++e.serial;
   if (!e.queued) {
@@ -158,7 +160,8 @@ Bounds Scene::bounds() const {
     const Bounds& b = parts_[instance.part].bounds;
     if (b.empty()) continue;
     for (int i = 0; i < 8; ++i) {
-      glm::vec4 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z, 1.0f);
+      glm::vec4 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z,
+                       1.0f);
       world.add(glm::vec3(instance.transform * corner));
     }
   }

@@ -6,8 +6,9 @@
 // Scene is CPU state only. Every change is recorded here and the Renderer uploads it later, within
 // its per-frame byte budget: until a face's new index array is on the GPU the previous one is drawn,
 // so a frame never shows a half-replaced face. Only the latest array of a face is uploaded even if
-// it was replaced several times in between. Not thread-safe: call from the render thread (the
-// stream's worker hands its snapshots over through its ring buffer).
+// it was replaced several times in between. Scene keeps a CPU copy of the vertex array (24 bytes
+// a vertex: bounds and staging) but drops each index array once it is uploaded. Not thread-safe:
+// call from the render thread (the stream's worker hands its snapshots over through its ring).
 #pragma once
 
 #include <cstddef>
@@ -148,7 +149,7 @@ class Scene {
   std::uint64_t pendingIndexBytes_ = 0;
   std::uint64_t pendingEdgeBytes_ = 0;
   DirtySet faceColorsDirty_;
-  DirtySet faceDrawsDirty_;  // visibility changed: the draw command must be rewritten
+  DirtySet faceDrawsDirty_;       // visibility changed: the draw command must be rewritten
   std::uint64_t generation_ = 0;  // bumped by clear()
 };
 

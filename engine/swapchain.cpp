@@ -57,7 +57,8 @@ Status createAll(const Device& device, VkSurfaceKHR surface, VkSurfaceFormatKHR 
   if (caps.maxImageCount > 0) imageCount = std::min(imageCount, caps.maxImageCount);
   VkCompositeAlphaFlagBitsKHR alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
   if (!(caps.supportedCompositeAlpha & alpha)) {
-    alpha = static_cast<VkCompositeAlphaFlagBitsKHR>(caps.supportedCompositeAlpha & -caps.supportedCompositeAlpha);
+    alpha = static_cast<VkCompositeAlphaFlagBitsKHR>(caps.supportedCompositeAlpha &
+                                                     -caps.supportedCompositeAlpha);
   }
 
   auto info = vkInit<VkSwapchainCreateInfoKHR>(VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR);

@@ -34,6 +34,8 @@ void Bounds::add(const Bounds& b) {
   add(b.max);
 }
 
-float Bounds::radius() const { return empty() ? 0.0f : 0.5f * glm::length(max - min); }
+float Bounds::radius() const {
+  return empty() ? 0.0f : 0.5f * glm::length(max - min);
+}
 
 }  // namespace cetview::engine

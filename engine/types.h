@@ -21,8 +21,12 @@ struct Color8 {
   std::uint8_t r = 0, g = 0, b = 0, a = 255;
 };
 
-inline bool operator==(Color8 x, Color8 y) { return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a; }
-inline bool operator!=(Color8 x, Color8 y) { return !(x == y); }
+inline bool operator==(Color8 x, Color8 y) {
+  return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a;
+}
+inline bool operator!=(Color8 x, Color8 y) {
+  return !(x == y);
+}
 
 // Colour from sRGB-encoded floats in [0, 1] (clamped, rounded to nearest).
 Color8 colorFromFloat(float r, float g, float b, float a = 1.0f);
@@ -32,7 +36,8 @@ glm::vec4 linearColor(Color8 c);
 
 // The GPU face table's packing: R in the low byte (GLSL unpackUnorm4x8 order).
 constexpr std::uint32_t packColor(Color8 c) {
-  return std::uint32_t{c.r} | (std::uint32_t{c.g} << 8) | (std::uint32_t{c.b} << 16) | (std::uint32_t{c.a} << 24);
+  return std::uint32_t{c.r} | (std::uint32_t{c.g} << 8) | (std::uint32_t{c.b} << 16) |
+         (std::uint32_t{c.a} << 24);
 }
 
 // Distinct id types: a face id passed where an edge id belongs does not compile.
@@ -41,10 +46,18 @@ enum class EdgeId : std::uint32_t {};
 enum class PartId : std::uint32_t {};
 enum class InstanceId : std::uint32_t {};
 
-constexpr std::uint32_t toIndex(FaceId id) { return static_cast<std::uint32_t>(id); }
-constexpr std::uint32_t toIndex(EdgeId id) { return static_cast<std::uint32_t>(id); }
-constexpr std::uint32_t toIndex(PartId id) { return static_cast<std::uint32_t>(id); }
-constexpr std::uint32_t toIndex(InstanceId id) { return static_cast<std::uint32_t>(id); }
+constexpr std::uint32_t toIndex(FaceId id) {
+  return static_cast<std::uint32_t>(id);
+}
+constexpr std::uint32_t toIndex(EdgeId id) {
+  return static_cast<std::uint32_t>(id);
+}
+constexpr std::uint32_t toIndex(PartId id) {
+  return static_cast<std::uint32_t>(id);
+}
+constexpr std::uint32_t toIndex(InstanceId id) {
+  return static_cast<std::uint32_t>(id);
+}
 
 // Axis-aligned box; empty (min > max) until something is added.
 struct Bounds {

@@ -14,7 +14,9 @@ Result<UploadRing> UploadRing::create(const Device& device, std::uint64_t capaci
   return ring;
 }
 
-void UploadRing::destroy(const Device& device) { destroyBuffer(device, buffer_); }
+void UploadRing::destroy(const Device& device) {
+  destroyBuffer(device, buffer_);
+}
 
 std::optional<std::uint64_t> UploadRing::push(const void* data, std::uint64_t size) {
   auto offset = allocate(size);

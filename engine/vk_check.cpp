@@ -7,7 +7,8 @@ namespace cetview::engine {
 const char* vkResultName(VkResult result) {
   switch (result) {
 #define CETVIEW_RESULT_NAME(name) \
-  case name: return #name;
+  case name:                      \
+    return #name;
     CETVIEW_RESULT_NAME(VK_SUCCESS)
     CETVIEW_RESULT_NAME(VK_NOT_READY)
     CETVIEW_RESULT_NAME(VK_TIMEOUT)
@@ -38,7 +39,8 @@ const char* vkResultName(VkResult result) {
     CETVIEW_RESULT_NAME(VK_ERROR_INCOMPATIBLE_DISPLAY_KHR)
     CETVIEW_RESULT_NAME(VK_ERROR_VALIDATION_FAILED_EXT)
 #undef CETVIEW_RESULT_NAME
-    default: break;
+    default:
+      break;
   }
   thread_local std::string unknown;
   unknown = "VkResult(" + std::to_string(static_cast<int>(result)) + ")";
@@ -54,11 +56,20 @@ Error vkError(const char* call, VkResult result) {
     case VK_ERROR_OUT_OF_HOST_MEMORY:
     case VK_ERROR_OUT_OF_DEVICE_MEMORY:
     case VK_ERROR_OUT_OF_POOL_MEMORY:
-    case VK_ERROR_FRAGMENTED_POOL: code = ErrorCode::kOutOfMemory; break;
-    case VK_ERROR_DEVICE_LOST: code = ErrorCode::kDeviceLost; break;
-    case VK_ERROR_SURFACE_LOST_KHR: code = ErrorCode::kSurfaceLost; break;
-    case VK_ERROR_INCOMPATIBLE_DRIVER: code = ErrorCode::kNoVulkan; break;
-    default: break;
+    case VK_ERROR_FRAGMENTED_POOL:
+      code = ErrorCode::kOutOfMemory;
+      break;
+    case VK_ERROR_DEVICE_LOST:
+      code = ErrorCode::kDeviceLost;
+      break;
+    case VK_ERROR_SURFACE_LOST_KHR:
+      code = ErrorCode::kSurfaceLost;
+      break;
+    case VK_ERROR_INCOMPATIBLE_DRIVER:
+      code = ErrorCode::kNoVulkan;
+      break;
+    default:
+      break;
   }
   return Error{code, name + " failed: " + vkResultName(result)};
 }

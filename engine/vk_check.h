@@ -27,8 +27,8 @@ Error vkError(const char* call, VkResult result);
 }  // namespace cetview::engine
 
 // Evaluates a Vulkan call and returns vkError() from the enclosing function unless it gave VK_SUCCESS.
-#define CETVIEW_VK(call)                                                          \
-  do {                                                                            \
-    VkResult cetview_vk_result_ = (call);                                         \
+#define CETVIEW_VK(call)                                                                                \
+  do {                                                                                                  \
+    VkResult cetview_vk_result_ = (call);                                                               \
     if (cetview_vk_result_ != VK_SUCCESS) return ::cetview::engine::vkError(#call, cetview_vk_result_); \
   } while (0)

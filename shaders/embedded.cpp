@@ -23,13 +23,20 @@ Spirv wrap(const std::uint32_t (&words)[N]) {
 
 Spirv spirv(ShaderId id) {
   switch (id) {
-    case ShaderId::kBackgroundVert: return wrap(spirv_background_vert);
-    case ShaderId::kBackgroundFrag: return wrap(spirv_background_frag);
-    case ShaderId::kMeshVert: return wrap(spirv_mesh_vert);
-    case ShaderId::kMeshFrag: return wrap(spirv_mesh_frag);
-    case ShaderId::kWireFrag: return wrap(spirv_wire_frag);
-    case ShaderId::kEdgeVert: return wrap(spirv_edge_vert);
-    case ShaderId::kEdgeFrag: return wrap(spirv_edge_frag);
+    case ShaderId::kBackgroundVert:
+      return wrap(spirv_background_vert);
+    case ShaderId::kBackgroundFrag:
+      return wrap(spirv_background_frag);
+    case ShaderId::kMeshVert:
+      return wrap(spirv_mesh_vert);
+    case ShaderId::kMeshFrag:
+      return wrap(spirv_mesh_frag);
+    case ShaderId::kWireFrag:
+      return wrap(spirv_wire_frag);
+    case ShaderId::kEdgeVert:
+      return wrap(spirv_edge_vert);
+    case ShaderId::kEdgeFrag:
+      return wrap(spirv_edge_frag);
   }
   std::abort();  // unreachable: every enumerator is handled above
 }

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cmath>
+#include <ostream>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
@@ -15,8 +17,8 @@ namespace {
 
 using namespace engine;
 
-const StandardView kAllViews[] = {StandardView::kIso,  StandardView::kFront, StandardView::kBack,
-                                  StandardView::kLeft, StandardView::kRight, StandardView::kTop,
+const StandardView kAllViews[] = {StandardView::kIso,   StandardView::kFront, StandardView::kBack,
+                                  StandardView::kLeft,  StandardView::kRight, StandardView::kTop,
                                   StandardView::kBottom};
 
 Bounds box(glm::vec3 min, glm::vec3 max) {
@@ -93,12 +95,18 @@ struct FitCase {
   float aspect;
 };
 
+void PrintTo(const FitCase& c, std::ostream* os) {
+  *os << (c.projection == Projection::kPerspective ? "perspective" : "orthographic") << ", aspect "
+      << c.aspect;
+}
+
 class CameraFitTest : public ::testing::TestWithParam<FitCase> {};
 
 TEST_P(CameraFitTest, FitContainsTheBoxAndIsTight) {
   const FitCase& c = GetParam();
   const Bounds boxes[] = {box({-1, -1, -1}, {1, 1, 1}), box({10, 20, -5}, {14, 21, 30}),
-                          box({-0.001f, -0.002f, 0}, {0.001f, 0.002f, 0.0005f}), box({0, 0, 0}, {500, 20, 3})};
+                          box({-0.001f, -0.002f, 0}, {0.001f, 0.002f, 0.0005f}),
+                          box({0, 0, 0}, {500, 20, 3})};
   for (const Bounds& b : boxes) {
     for (StandardView v : kAllViews) {
       Camera camera;
@@ -127,7 +135,14 @@ INSTANTIATE_TEST_SUITE_P(Projections, CameraFitTest,
                                            FitCase{Projection::kPerspective, 0.5f},
                                            FitCase{Projection::kOrthographic, 1.0f},
                                            FitCase{Projection::kOrthographic, 16.0f / 9.0f},
-                                           FitCase{Projection::kOrthographic, 0.5f}));
+                                           FitCase{Projection::kOrthographic, 0.5f}),
+                         [](const ::testing::TestParamInfo<FitCase>& param) {
+                           const char* projection = param.param.projection == Projection::kPerspective
+                                                        ? "Perspective"
+                                                        : "Orthographic";
+                           return std::string(projection) + "Aspect" +
+                                  std::to_string(static_cast<int>(std::lround(param.param.aspect * 100.0f)));
+                         });
 
 TEST(CameraTest, FitKeepsDirectionAndCentresTheTarget) {
   Bounds b = box({2, 4, 6}, {4, 8, 12});

@@ -8,7 +8,8 @@ namespace {
 
 using namespace engine;
 
-DeviceCandidate candidate(const char* name, VkPhysicalDeviceType type, std::uint32_t api = VK_API_VERSION_1_3) {
+DeviceCandidate candidate(const char* name, VkPhysicalDeviceType type,
+                          std::uint32_t api = VK_API_VERSION_1_3) {
   DeviceCandidate c;
   c.name = name;
   c.type = type;

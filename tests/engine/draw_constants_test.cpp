@@ -18,7 +18,8 @@ TEST(DrawConstantsTest, LightingVectorsMoveIntoPartSpace) {
   b.add(glm::vec3(1.0f));
   Camera camera = standardView(StandardView::kIso, b, 1.5f);
   FrameView view = makeFrameView(camera, 1.5f, ViewStyle{});
-  glm::mat4 model = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(3, -2, 5)), 0.7f, glm::vec3(1, 2, 3));
+  glm::mat4 model =
+      glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(3, -2, 5)), 0.7f, glm::vec3(1, 2, 3));
   model = glm::scale(model, glm::vec3(2.5f));  // uniform scale keeps angles
   DrawConstants c = drawConstants(view, model, std::nullopt, true);
 

@@ -16,7 +16,8 @@ ImageDiff compareImages(const RgbaImage& a, const RgbaImage& b, std::uint32_t th
     for (std::uint32_t x = 0; x < a.width; ++x) {
       std::uint32_t delta = 0;
       for (int c = 0; c < 4; ++c) {
-        delta = std::max<std::uint32_t>(delta, static_cast<std::uint32_t>(std::abs(a.at(x, y)[c] - b.at(x, y)[c])));
+        delta = std::max<std::uint32_t>(delta,
+                                        static_cast<std::uint32_t>(std::abs(a.at(x, y)[c] - b.at(x, y)[c])));
       }
       d.maxDelta = std::max(d.maxDelta, delta);
       if (delta > threshold) {
@@ -38,7 +39,8 @@ RgbaImage diffImage(const RgbaImage& a, const RgbaImage& b, std::uint32_t thresh
       std::uint8_t* p = out.at(x, y);
       std::uint32_t delta = 0;
       for (int c = 0; c < 4; ++c) {
-        delta = std::max<std::uint32_t>(delta, static_cast<std::uint32_t>(std::abs(a.at(x, y)[c] - b.at(x, y)[c])));
+        delta = std::max<std::uint32_t>(delta,
+                                        static_cast<std::uint32_t>(std::abs(a.at(x, y)[c] - b.at(x, y)[c])));
       }
       if (delta > threshold) {
         p[0] = 255, p[1] = 0, p[2] = 0;
@@ -79,8 +81,9 @@ void expectMatchesGolden(const RgbaImage& image, const std::string& name, std::u
   ImageDiff d = compareImages(image, *expected, threshold);
   auto allowed = static_cast<std::uint32_t>(maxDifferingFraction * image.width * image.height);
   if (d.differing > allowed) saveOutput(diffImage(image, *expected, threshold), name + ".diff");
-  EXPECT_LE(d.differing, allowed) << name << ": " << d.differing << " pixels differ by more than " << threshold
-                                  << " (largest difference " << d.maxDelta << "); see " << CETVIEW_TEST_OUTPUT_DIR;
+  EXPECT_LE(d.differing, allowed) << name << ": " << d.differing << " pixels differ by more than "
+                                  << threshold << " (largest difference " << d.maxDelta << "); see "
+                                  << CETVIEW_TEST_OUTPUT_DIR;
 }
 
 }  // namespace cetview::test

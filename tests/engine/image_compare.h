@@ -33,7 +33,7 @@ std::string saveOutput(const engine::RgbaImage& image, const std::string& name);
 // The golden check: fails the current test (gtest) when more than `maxDifferingFraction` of the
 // pixels differ from golden/NAME.png by more than `threshold` in any channel. With
 // CETVIEW_UPDATE_GOLDEN=1 it writes the golden instead.
-void expectMatchesGolden(const engine::RgbaImage& image, const std::string& name, std::uint32_t threshold = 24,
-                         double maxDifferingFraction = 0.005);
+void expectMatchesGolden(const engine::RgbaImage& image, const std::string& name,
+                         std::uint32_t threshold = 24, double maxDifferingFraction = 0.005);
 
 }  // namespace cetview::test

@@ -26,7 +26,8 @@ class VulkanTest : public ::testing::Test {
 
   // A headless renderer on device_, released before the device in TearDown(); null (and the test
   // failed) when it cannot be created.
-  engine::Renderer* makeHeadless(std::uint32_t width, std::uint32_t height, engine::RendererOptions options = {});
+  engine::Renderer* makeHeadless(std::uint32_t width, std::uint32_t height,
+                                 engine::RendererOptions options = {});
 
   engine::Instance instance_;
   engine::Device device_;

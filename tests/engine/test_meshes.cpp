@@ -21,7 +21,9 @@ const Color8 kPalette[] = {
     {160, 126, 190, 255}, {96, 178, 178, 255},  {200, 200, 204, 255}, {190, 140, 160, 255},
 };
 
-MeshVertex vertex(glm::vec3 p, glm::vec3 n) { return MeshVertex{{p.x, p.y, p.z}, {n.x, n.y, n.z}}; }
+MeshVertex vertex(glm::vec3 p, glm::vec3 n) {
+  return MeshVertex{{p.x, p.y, p.z}, {n.x, n.y, n.z}};
+}
 
 }  // namespace
 
@@ -84,9 +86,11 @@ MeshData sphere(float radius, std::uint32_t segments, glm::vec3 center) {
       auto first = static_cast<std::uint32_t>(mesh.vertices.size());
       // Rows from the equator (j = 0) to the pole (j = n); the pole row is one vertex.
       for (std::uint32_t j = 0; j < n; ++j) {
-        float latitude = (hemisphere == 0 ? 1.0f : -1.0f) * 0.5f * kPi * static_cast<float>(j) / static_cast<float>(n);
+        float latitude =
+            (hemisphere == 0 ? 1.0f : -1.0f) * 0.5f * kPi * static_cast<float>(j) / static_cast<float>(n);
         for (std::uint32_t i = 0; i <= n; ++i) {
-          float longitude = 0.5f * kPi * (static_cast<float>(quarter) + static_cast<float>(i) / static_cast<float>(n));
+          float longitude =
+              0.5f * kPi * (static_cast<float>(quarter) + static_cast<float>(i) / static_cast<float>(n));
           mesh.vertices.push_back(point(longitude, latitude));
         }
       }
@@ -121,7 +125,8 @@ MeshData sphere(float radius, std::uint32_t segments, glm::vec3 center) {
   for (int quarter = 0; quarter < 4; ++quarter) {
     std::vector<glm::vec3> equator;
     for (std::uint32_t i = 0; i <= samples; ++i) {
-      float longitude = 0.5f * kPi * (static_cast<float>(quarter) + static_cast<float>(i) / static_cast<float>(samples));
+      float longitude =
+          0.5f * kPi * (static_cast<float>(quarter) + static_cast<float>(i) / static_cast<float>(samples));
       MeshVertex v = point(longitude, 0.0f);
       equator.emplace_back(v.position[0], v.position[1], v.position[2]);
     }
@@ -129,7 +134,8 @@ MeshData sphere(float radius, std::uint32_t segments, glm::vec3 center) {
     for (int hemisphere = 0; hemisphere < 2; ++hemisphere) {
       std::vector<glm::vec3> meridian;
       for (std::uint32_t j = 0; j <= samples; ++j) {
-        float latitude = (hemisphere == 0 ? 1.0f : -1.0f) * 0.5f * kPi * static_cast<float>(j) / static_cast<float>(samples);
+        float latitude = (hemisphere == 0 ? 1.0f : -1.0f) * 0.5f * kPi * static_cast<float>(j) /
+                         static_cast<float>(samples);
         MeshVertex v = point(0.5f * kPi * static_cast<float>(quarter), latitude);
         meridian.emplace_back(v.position[0], v.position[1], v.position[2]);
       }
@@ -147,13 +153,15 @@ MeshData lattice(std::uint32_t count, float spacing, std::uint32_t segments) {
   for (std::uint32_t z = 0; z < count; ++z) {
     for (std::uint32_t y = 0; y < count; ++y) {
       for (std::uint32_t x = 0; x < count; ++x) {
-        glm::vec3 c(spacing * static_cast<float>(x), spacing * static_cast<float>(y), spacing * static_cast<float>(z));
+        glm::vec3 c(spacing * static_cast<float>(x), spacing * static_cast<float>(y),
+                    spacing * static_cast<float>(z));
         MeshData ball = sphere(radius, segments, c - glm::vec3(0.5f * extent));
         // One face per object, coloured by position.
         MeshFace merged;
         glm::vec3 t = c / std::max(extent, 1e-6f);
         merged.color = engine::colorFromFloat(0.35f + 0.6f * t.x, 0.35f + 0.6f * t.y, 0.35f + 0.6f * t.z);
-        for (const MeshFace& f : ball.faces) merged.indices.insert(merged.indices.end(), f.indices.begin(), f.indices.end());
+        for (const MeshFace& f : ball.faces)
+          merged.indices.insert(merged.indices.end(), f.indices.begin(), f.indices.end());
         ball.faces = {merged};
         ball.edges.clear();
         append(mesh, ball);

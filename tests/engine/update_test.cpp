@@ -119,7 +119,8 @@ TEST_F(UpdateTest, LargeUploadSpreadsOverFramesAndNeverShowsHalfAFace) {
     EXPECT_EQ(r->committedTriangles() % trianglesPerFace, 0u) << "half a face is drawn";
     ASSERT_LT(++frames, 200) << "uploads do not finish";
   }
-  EXPECT_GE(std::uint64_t(frames), total / small.uploadBudgetBytes) << total << " bytes in " << frames << " frames";
+  EXPECT_GE(std::uint64_t(frames), total / small.uploadBudgetBytes)
+      << total << " bytes in " << frames << " frames";
   EXPECT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
   RgbaImage streamed = shot(*r, camera);
 
@@ -157,7 +158,8 @@ TEST_F(UpdateTest, FacesSwitchOnlyWhenCompletelyUploaded) {
   for (;;) {
     RgbaImage frame = shot(*r, camera);
     if (r->lastUploadStats().facesCompleted > 0) break;
-    ASSERT_EQ(compareImages(frame, coarse, 0).differing, 0u) << "frame " << waiting << " shows a partial face";
+    ASSERT_EQ(compareImages(frame, coarse, 0).differing, 0u)
+        << "frame " << waiting << " shows a partial face";
     ASSERT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
     ASSERT_LT(++waiting, 400);
   }
@@ -267,6 +269,37 @@ TEST_F(UpdateTest, ClosedSolidsLookTheSameWithBackFacesCulled) {
   EXPECT_LE(compareImages(culled, shot(*r, camera), 2).differing, 20u);
   ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
   EXPECT_LE(compareImages(culledMirror, shot(*r, camera), 2).differing, 20u);
+}
+
+TEST_F(UpdateTest, OverlayDrawsInsideTheRenderPassOfRenderedFrames) {
+  Renderer* r = load(cube());
+  ASSERT_NE(r, nullptr);
+  ASSERT_NE(r->renderPass(), VK_NULL_HANDLE);
+  int calls = 0;
+  // What the viewer's ImGui pass will do, reduced to a clear of a corner rectangle: only valid
+  // inside a render pass, and visible in the capture.
+  r->setOverlay([&calls](VkCommandBuffer cmd) {
+    ++calls;
+    VkClearAttachment clear{};
+    clear.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    clear.colorAttachment = 0;
+    clear.clearValue.color = {{1.0f, 0.0f, 1.0f, 1.0f}};
+    VkClearRect rect{{{8, 8}, {32, 16}}, 0, 1};
+    vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
+  });
+  ASSERT_TRUE(r->finishUploads().ok());  // upload-only frames: no render pass, no overlay
+  EXPECT_EQ(calls, 0);
+  RgbaImage image = shot(*r, standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+  EXPECT_EQ(calls, 1);
+  const std::uint8_t* inside = image.at(20, 12);
+  EXPECT_EQ(inside[0], 255);
+  EXPECT_EQ(inside[1], 0);
+  EXPECT_EQ(inside[2], 255);
+  EXPECT_NE(image.at(60, 12)[1], 0);  // the background beside it
+  r->setOverlay({});
+  RgbaImage plain = shot(*r, standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+  EXPECT_EQ(calls, 1);
+  EXPECT_NE(plain.at(20, 12)[1], 0);
 }
 
 TEST_F(UpdateTest, RenderMeshToPngWritesTheSameImage) {

@@ -15,11 +15,11 @@
 #include <string>
 #include <thread>
 
+// vulkan_xcb.h needs xcb.h first: separate blocks keep clang-format from reordering them.
 #include <xcb/xcb.h>
-// clang-format off: vulkan_xcb.h needs xcb.h first
+
 #include <vulkan/vulkan.h>
 #include <vulkan/vulkan_xcb.h>
-// clang-format on
 
 #include "engine/render_to_png.h"
 #include "engine/vk_check.h"
@@ -40,8 +40,8 @@ class XvfbServer {
     int fds[2];
     if (pipe(fds) != 0) return false;
     std::string fd = std::to_string(fds[1]);
-    const char* argv[] = {"Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "640x480x24", "-nolisten", "tcp",
-                          nullptr};
+    const char* argv[] = {"Xvfb",       "-displayfd", fd.c_str(), "-screen", "0",
+                          "640x480x24", "-nolisten",  "tcp",      nullptr};
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addclose(&actions, fds[0]);

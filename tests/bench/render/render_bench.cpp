@@ -11,13 +11,21 @@
 // 3. Streaming: the longest and mean frame while a large replacement (every face re-tessellated,
 //    same size) streams in at 16 and 4 MiB per frame, against idle frames of the same scene, and
 //    without a budget (everything in one frame) for comparison.
+#include <dirent.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "engine/context.h"
@@ -45,7 +53,17 @@ std::string budgetLabel(std::uint64_t budget) {
   return budget >= kUnlimited ? "unlimited (256 MiB)" : std::to_string(budget >> 20) + " MiB";
 }
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Seconds of CPU time this process (all its threads: ours, lavapipe's queue and rasterisers) used.
+double cpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
 
 // Spheres of `segments` needed for about `triangles` triangles.
 std::uint32_t sphereCount(std::uint64_t triangles, std::uint32_t segments) {
@@ -108,25 +126,80 @@ void draw(Renderer& r, const Camera& camera, const ViewStyle& style = {}) {
   if (!status) check(status.error());
 }
 
-// Mean frame time in ms of back-to-back frames (after a warm-up), measured for ~`seconds`.
-double meanFrameMs(Renderer& r, const Camera& camera, const ViewStyle& style, double seconds) {
+// CPU seconds used so far by each thread of this process (Linux /proc), by thread id.
+std::map<std::string, double> threadCpuSeconds() {
+  std::map<std::string, double> result;
+  DIR* dir = opendir("/proc/self/task");
+  if (dir == nullptr) return result;
+  const double tick = double(sysconf(_SC_CLK_TCK));
+  while (dirent* entry = readdir(dir)) {
+    if (entry->d_name[0] == '.') continue;
+    std::ifstream file(std::string("/proc/self/task/") + entry->d_name + "/stat");
+    std::string line;
+    std::getline(file, line);
+    std::size_t close = line.rfind(')');
+    if (close == std::string::npos) continue;
+    // After "pid (comm) ": state is field 3; utime and stime are fields 14 and 15.
+    std::istringstream fields(line.substr(close + 2));
+    std::string field;
+    double utime = 0, stime = 0;
+    for (int i = 3; i <= 15 && fields >> field; ++i) {
+      if (i == 14) utime = std::atof(field.c_str());
+      if (i == 15) stime = std::atof(field.c_str());
+    }
+    result[entry->d_name] = (utime + stime) / tick;
+  }
+  closedir(dir);
+  return result;
+}
+
+struct FrameCost {
+  double wallMs = 0.0;     // wall-clock time per frame
+  double cpuMs = 0.0;      // CPU time per frame, summed over all threads
+  double busiestMs = 0.0;  // CPU time per frame of the busiest thread (lavapipe's front end)
+};
+
+// Cost of back-to-back frames (after a warm-up), measured for about `seconds`.
+FrameCost frameCost(Renderer& r, const Camera& camera, const ViewStyle& style, double seconds) {
   for (int i = 0; i < 3; ++i) draw(r, camera, style);
   check(r.waitIdle());
   int frames = 0;
   auto start = Clock::now();
+  double cpuStart = cpuSeconds();
+  std::map<std::string, double> threadsStart = threadCpuSeconds();
   do {
     draw(r, camera, style);
     ++frames;
   } while (since(start) < seconds || frames < 5);
   check(r.waitIdle());
-  return 1000.0 * since(start) / frames;
+  FrameCost cost{1000.0 * since(start) / frames, 1000.0 * (cpuSeconds() - cpuStart) / frames, 0.0};
+  for (const auto& [thread, cpu] : threadCpuSeconds()) {
+    cost.busiestMs = std::max(cost.busiestMs, 1000.0 * (cpu - threadsStart[thread]) / frames);
+  }
+  return cost;
+}
+
+// What a machine with `cores` otherwise idle cores would take: the busiest thread and the
+// total work per core bound it from below (lavapipe overlaps one frame's front end with the
+// previous frame's rasterisation, so the bound is close).
+double dedicatedMs(const FrameCost& c, unsigned cores) {
+  return std::max(c.busiestMs, c.cpuMs / cores);
 }
 
 void frameTimes(const Device& device, const Args& args) {
-  std::printf("\n1. Frame time (ms, and fps), %ux%u, shaded with B-rep edges, perspective iso view\n", args.width,
+  unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  std::printf("\n1. Frame time, %ux%u, shaded with B-rep edges, perspective iso view.\n", args.width,
               args.height);
-  std::printf("%10s %6s %6s | %16s | %16s | %16s\n", "triangles", "faces", "edges", "closed, 1x",
-              "open, 1x", "closed, 4x MSAA");
+  std::printf(
+      "   ms, fps: wall clock here. cpu: CPU ms per frame over all threads; front: the busiest\n"
+      "   thread (lavapipe's queue: vertex shading, setup, binning). est fps: max(front, cpu/%u)\n"
+      "   as frame time, an estimate for %u otherwise idle cores (on a shared machine the wall\n"
+      "   clock mostly measures the neighbours).\n",
+      cores, cores);
+  std::printf("%9s %5s | %36s | %36s | %21s\n", "triangles", "faces", "closed solid (culled), 1x",
+              "open shell (two-sided), 1x", "closed, 4x MSAA");
+  std::printf("%9s %5s | %6s %5s %6s %6s %7s | %6s %5s %6s %6s %7s | %6s %5s %7s\n", "", "", "ms", "fps",
+              "cpu", "front", "est fps", "ms", "fps", "cpu", "front", "est fps", "ms", "fps", "est fps");
   const std::uint64_t targets[] = {10000, 100000, 500000, 1000000, 2000000};
   for (std::uint64_t target : targets) {
     if (target > args.maxTriangles) break;
@@ -136,7 +209,7 @@ void frameTimes(const Device& device, const Args& args) {
       std::uint32_t samples;
     };
     const Column columns[] = {{true, 1}, {false, 1}, {true, 4}};
-    double ms[3] = {0, 0, 0};
+    FrameCost cost[3];
     for (int k = 0; k < 3; ++k) {
       mesh.closedSolid = columns[k].closed;
       auto r = makeRenderer(device, args, columns[k].samples, kUnlimited);
@@ -144,11 +217,16 @@ void frameTimes(const Device& device, const Args& args) {
       if (!part) check(part.error());
       check(r->finishUploads());
       Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
-      ms[k] = meanFrameMs(*r, camera, ViewStyle{}, args.seconds);
+      cost[k] = frameCost(*r, camera, ViewStyle{}, args.seconds);
     }
-    std::printf("%10llu %6zu %6zu | %7.1f (%5.1f) | %7.1f (%5.1f) | %7.1f (%5.1f)\n",
-                static_cast<unsigned long long>(test::triangleCount(mesh)), mesh.faces.size(), mesh.edges.size(),
-                ms[0], 1000.0 / ms[0], ms[1], 1000.0 / ms[1], ms[2], 1000.0 / ms[2]);
+    std::printf("%9llu %5zu", static_cast<unsigned long long>(test::triangleCount(mesh)), mesh.faces.size());
+    for (int k = 0; k < 2; ++k) {
+      const FrameCost& c = cost[k];
+      std::printf(" | %6.1f %5.1f %6.1f %6.1f %7.1f", c.wallMs, 1000.0 / c.wallMs, c.cpuMs, c.busiestMs,
+                  1000.0 / dedicatedMs(c, cores));
+    }
+    std::printf(" | %6.1f %5.1f %7.1f\n", cost[2].wallMs, 1000.0 / cost[2].wallMs,
+                1000.0 / dedicatedMs(cost[2], cores));
   }
 }
 
@@ -192,10 +270,11 @@ void streaming(const Device& device, const Args& args) {
   std::uint64_t base = std::min<std::uint64_t>(args.maxTriangles, 1000000);
   std::uint32_t segments = segmentsFor(base);
   MeshData mesh = sphereGridOf(base, segments);
-  std::printf("\n3. Frames while a re-tessellation streams in: %llu triangles, every face replaced by a new array\n"
-              "   of the same size over new vertices (the picture and its drawing cost stay the same).\n"
-              "   Each frame is waited for, so a frame is charged with its whole upload.\n",
-              static_cast<unsigned long long>(test::triangleCount(mesh)));
+  std::printf(
+      "\n3. Frames while a re-tessellation streams in: %llu triangles, every face replaced by a new array\n"
+      "   of the same size over new vertices (the picture and its drawing cost stay the same).\n"
+      "   Each frame is waited for, so a frame is charged with its whole upload.\n",
+      static_cast<unsigned long long>(test::triangleCount(mesh)));
   std::printf("%20s %7s %10s %10s %9s %11s %7s %13s\n", "budget per frame", "frames", "idle mean", "idle max",
               "mean ms", "longest ms", "MB", "max MB/frame");
   for (std::uint64_t budget : {std::uint64_t{16} << 20, std::uint64_t{4} << 20, kUnlimited}) {
