@@ -109,13 +109,13 @@ void CameraController::animateTo(const engine::Camera& target, float seconds) {
 void CameraController::viewStandard(engine::StandardView view, float aspect, float seconds) {
   engine::Camera target = engine::standardView(view, bounds_, aspect, camera_.projection);
   target.fovY = camera_.fovY;
-  if (!bounds_.empty()) engine::fitToBounds(target, bounds_, aspect);
+  if (!bounds_.empty()) engine::fitToBounds(target, bounds_, aspect, margin_);
   animateTo(target, seconds);
 }
 
 void CameraController::fitAll(float aspect, float seconds) {
   engine::Camera target = animating_ ? to_ : camera_;
-  engine::fitToBounds(target, bounds_, aspect);
+  engine::fitToBounds(target, bounds_, aspect, margin_);
   animateTo(target, seconds);
 }
 

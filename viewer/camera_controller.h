@@ -20,6 +20,8 @@ class CameraController {
   void setBounds(const engine::Bounds& bounds);
 
   const engine::Camera& camera() const { return camera_; }
+  // Air around the model when fitting (1.1 = 10% on the tighter axis); the window leaves room for panels.
+  void setFitMargin(float margin) { margin_ = margin; }
 
   // Turntable orbit about the target: horizontal drag turns about world Z (CAD up), vertical drag
   // tilts about the screen's right axis. 0.3 degrees per pixel.
@@ -50,6 +52,7 @@ class CameraController {
 
   engine::Camera camera_;
   engine::Bounds bounds_;
+  float margin_ = 1.1f;
   engine::Camera from_, to_;
   float elapsed_ = 0, duration_ = 0;
   bool animating_ = false;

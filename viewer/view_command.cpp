@@ -40,6 +40,7 @@ constexpr double kFinestRelative = 1e-4;  // the chordal slider's finest stop: 0
 constexpr float kPanelWidth = 300.0f;
 constexpr float kMargin = 8.0f;
 constexpr float kMenuHeight = 24.0f;
+constexpr float kFitMargin = 1.5f;  // the panels cover the window's sides
 
 struct ViewCli {
   std::string model = "demo";
@@ -211,8 +212,10 @@ std::string Viewer::openModel(const std::string& path) {
   buildTree();
   const glm::vec2 vp = viewport();
   const float aspect = vp.y > 0 ? vp.x / vp.y : 1.0f;
+  camera_.setFitMargin(kFitMargin);
   camera_.reset(engine::standardView(initialView_, live_->modelScene().bounds(), aspect, camera_.camera().projection),
                 live_->modelScene().bounds());
+  camera_.viewStandard(initialView_, aspect, 0.0f);
   glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
   return {};
 }
@@ -576,7 +579,7 @@ void Viewer::drawStatsPanel() {
   ImGui::Text("%.1f fps, frame %.2f ms", fps, lastFrameMs_);
   ImGui::TextWrapped("%s", glue_.device().name.c_str());
   ImGui::Text("memory: %.0f MiB resident", residentMiB());
-  ImGui::Text("scene: %u vertices, %llu GPU triangles", r_.scene().vertexCount(),
+  ImGui::Text("scene: %u vertices, %llu triangles", r_.scene().vertexCount(),
               static_cast<unsigned long long>(r_.committedTriangles()));
   if (ImGui::Button("Screenshot")) pendingScreenshot_ = screenshotName();
   if (!status_.empty()) {

@@ -1,5 +1,6 @@
 #include "window_glue.h"
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -14,6 +15,10 @@ namespace {
 
 void checkImGuiVk(VkResult r) {
   if (r != VK_SUCCESS) std::fprintf(stderr, "cetview: ImGui Vulkan backend: VkResult %d\n", static_cast<int>(r));
+}
+
+bool isSrgb(VkFormat format) {
+  return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
 }
 
 std::string vkFailed(const char* what, VkResult r) {
@@ -95,6 +100,15 @@ std::string WindowGlue::init(const WindowOptions& options) {
   imguiContext_ = true;
   ImGui::GetIO().IniFilename = nullptr;  // the same layout every start (tests rely on it)
   ImGui::StyleColorsDark();
+  if (isSrgb(renderer_->colorFormat())) {
+    // ImGui's colours are meant as sRGB values written as they are; an sRGB swapchain would encode
+    // them again and wash them out, so hand it their linear equivalents.
+    for (ImVec4& c : ImGui::GetStyle().Colors) {
+      c.x = std::pow(c.x, 2.2f);
+      c.y = std::pow(c.y, 2.2f);
+      c.z = std::pow(c.z, 2.2f);
+    }
+  }
   if (!ImGui_ImplGlfw_InitForVulkan(window_, true)) return "ImGui's GLFW backend did not initialise";
   imguiGlfw_ = true;
 
