@@ -403,7 +403,7 @@ void Viewer::drawTessellationPanel() {
 
 void Viewer::drawProgressPanel() {
   ImGui::SetNextWindowPos(ImVec2(kMargin, kMenuHeight + 2 * kMargin + 170.0f), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 200.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 245.0f), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Progress", &showProgress_)) {
     ImGui::End();
     return;
