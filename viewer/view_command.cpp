@@ -217,6 +217,9 @@ std::string Viewer::openModel(const std::string& path) {
                 live_->modelScene().bounds());
   camera_.viewStandard(initialView_, aspect, 0.0f);
   glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
+  std::printf("opened: %s (%zu faces, %d levels down to %.6g)\n", live_->model().source().c_str(),
+              live_->model().faces().size(), live_->lastLevel() + 1, live_->finestAbsolute());
+  std::fflush(stdout);
   return {};
 }
 
@@ -420,8 +423,11 @@ void Viewer::drawProgressPanel() {
     }
     char overlay[128];
     if (k < static_cast<int>(stats.size())) {
-      std::snprintf(overlay, sizeof overlay, "L%d  %.0f ms  %llu tris", k, stats[static_cast<std::size_t>(k)].ms,
-                    static_cast<unsigned long long>(stats[static_cast<std::size_t>(k)].triangles));
+      // Each level's own time (since the previous one completed) and the cumulative time.
+      const stream::LevelStat& st = stats[static_cast<std::size_t>(k)];
+      const double own = k == 0 ? st.ms : st.ms - stats[static_cast<std::size_t>(k - 1)].ms;
+      std::snprintf(overlay, sizeof overlay, "L%d  %.0f ms (at %.0f)  %llu tris", k, own, st.ms,
+                    static_cast<unsigned long long>(st.triangles));
     } else {
       std::snprintf(overlay, sizeof overlay, "L%d  %.4g", k, live_->levelTolerance(k));
     }

@@ -151,6 +151,22 @@ TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
   EXPECT_FALSE(imguiDark(at(*image, 150, 300)));  // where the Progress panel was
 }
 
+TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
+  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Pump_Nut.brep";
+  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string script = writeScript("open.script",
+                                         "wait level 0\n"
+                                         "open " + model + "\n"
+                                         "open /nonexistent/model.step\n"  // reported, the viewer goes on
+                                         "wait level target\n"
+                                         "quit\n");
+  std::string log;
+  ASSERT_EQ(runViewer("--size 640x400 --frames 3000 --threads 2 --script " + script, log), 0) << log;
+  EXPECT_NE(log.find("opened: demo"), std::string::npos) << log;
+  EXPECT_NE(log.find("opened: " + model), std::string::npos) << log;
+  EXPECT_NE(log.find("/nonexistent/model.step"), std::string::npos) << log;
+}
+
 TEST_F(ViewerWindowTest, BadInputIsExitCode2) {
   std::string log;
   EXPECT_EQ(runViewer("view /nonexistent/model.step --frames 2", log), 2) << log;
