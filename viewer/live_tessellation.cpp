@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "brep/measure.h"
+#include "engine/types.h"
 #include "brep/tolerance.h"
 
 namespace cetview {
@@ -48,7 +49,12 @@ std::string LiveTessellation::start() {
   if (!created.tessellator) return created.error;
   tess_ = std::move(created.tessellator);
   scene_.clear();
+  heatParts_.clear();
+  heatInstances_.clear();
+  heatShown_ = false;
   link_ = std::make_unique<ModelScene>(*model_, scene_);
+  visible_.resize(model_->instances().size(), true);
+  applyVisibility();
   target_ = 0;
   stream::StreamOptions streamOptions;
   streamOptions.threads = threads_;
@@ -88,15 +94,6 @@ double LiveTessellation::secondsSinceStart() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
 }
 
-std::vector<double> LiveTessellation::measureDeviationRatios(unsigned threads) {
-  if (!producer_->idle() || consumer_->completeLevel() < target_) return {};
-  const std::vector<brep::FaceQuality> quality = brep::measureFaces(*tess_, target_, std::max(1u, threads));
-  const double tolerance = levelTolerance(target_);
-  std::vector<double> ratios(quality.size());
-  for (std::size_t f = 0; f < quality.size(); ++f) ratios[f] = quality[f].maxDeviation / tolerance;
-  return ratios;
-}
-
 engine::Color8 LiveTessellation::heatColor(double ratio) {
   const double t = std::clamp(ratio, 0.0, 1.0);
   // Green -> yellow -> red; beyond the tolerance stays full red.
@@ -106,24 +103,74 @@ engine::Color8 LiveTessellation::heatColor(double ratio) {
                         static_cast<std::uint8_t>(std::lround(40 + 180 * g)), 40, 255};
 }
 
-void LiveTessellation::applyHeatColors(const std::vector<double>& ratios) {
-  for (std::uint32_t f = 0; f < ratios.size() && f < model_->faces().size(); ++f) {
-    (void)scene_.setFaceColor(link_->engineFace(f), heatColor(ratios[f]));
-  }
-  for (std::uint32_t i = 0; i < model_->instances().size(); ++i) {
-    (void)scene_.setInstanceColor(link_->engineInstance(i), std::nullopt);
+std::uint32_t LiveTessellation::heatBin(double ratio) {
+  // Bins 0 .. kHeatBins-2 split [0, 1); the last holds everything at or above the tolerance.
+  if (!(ratio < 1.0)) return kHeatBins - 1;
+  return std::min(kHeatBins - 2, static_cast<std::uint32_t>(std::max(0.0, ratio) * (kHeatBins - 1)));
+}
+
+void LiveTessellation::setInstanceVisible(std::uint32_t instance, bool visible) {
+  visible_[instance] = visible;
+  applyVisibility();
+}
+
+void LiveTessellation::applyVisibility() {
+  for (std::uint32_t i = 0; i < visible_.size(); ++i) {
+    (void)scene_.setInstanceVisible(link_->engineInstance(i), visible_[i] && !heatShown_);
+    if (i < heatInstances_.size()) (void)scene_.setInstanceVisible(heatInstances_[i], visible_[i] && heatShown_);
   }
 }
 
-void LiveTessellation::restoreFaceColors() {
-  const auto& faces = model_->faces();
-  for (std::uint32_t f = 0; f < faces.size(); ++f) {
-    (void)scene_.setFaceColor(link_->engineFace(f), toColor8(faces[f].color));
+bool LiveTessellation::showHeatMap(unsigned threads, double* worstRatio) {
+  if (!producer_->idle() || consumer_->completeLevel() < target_) return false;
+  const std::vector<std::vector<float>> deviation = brep::measureTriangles(*tess_, target_, std::max(1u, threads));
+  const double tolerance = levelTolerance(target_);
+  const brep::Model& m = *model_;
+  if (heatParts_.empty()) {
+    for (const brep::PartInfo& part : m.parts()) {
+      heatParts_.push_back(scene_.addPart(kHeatBins, 0, engine::kDefaultFaceColor, part.closed));
+    }
+    for (const brep::InstanceInfo& instance : m.instances()) {
+      auto id = scene_.addInstance(heatParts_[instance.part].part, ModelScene::instanceTransform(instance));
+      heatInstances_.push_back(id ? *id : engine::InstanceId{});
+    }
   }
-  const auto& instances = model_->instances();
-  for (std::uint32_t i = 0; i < instances.size(); ++i) {
-    if (instances[i].hasColor) (void)scene_.setInstanceColor(link_->engineInstance(i), toColor8(instances[i].color));
+  // One engine face per bin and part (not per model face): a software rasteriser pays per draw.
+  double worst = 0;
+  for (std::uint32_t p = 0; p < m.parts().size(); ++p) {
+    const brep::PartInfo& part = m.parts()[p];
+    std::vector<std::uint32_t> bins[kHeatBins];
+    for (std::uint32_t f = part.firstFace; f < part.firstFace + part.faceCount; ++f) {
+      const std::vector<std::uint32_t>& shown = link_->shownIndices(f);
+      const std::vector<float>& d = deviation[f];
+      const std::size_t triangles = shown.size() / 3;
+      double faceWorst = 0;
+      for (float x : d) faceWorst = std::max(faceWorst, static_cast<double>(x) / tolerance);
+      worst = std::max(worst, faceWorst);
+      for (std::size_t t = 0; t < triangles; ++t) {
+        // The face shows the measured level's triangles in the same order; should a face show
+        // another level (none at this one), its triangles take the face's worst.
+        const double ratio = d.size() == triangles ? static_cast<double>(d[t]) / tolerance : faceWorst;
+        std::vector<std::uint32_t>& bin = bins[heatBin(ratio)];
+        bin.insert(bin.end(), shown.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                   shown.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+      }
+    }
+    for (std::uint32_t b = 0; b < kHeatBins; ++b) {
+      const engine::FaceId id = heatParts_[p].face(b);
+      (void)scene_.setFaceIndices(id, bins[b].data(), bins[b].size());
+      (void)scene_.setFaceColor(id, heatColor(b == kHeatBins - 1 ? 1.0 : (b + 0.5) / (kHeatBins - 1)));
+    }
   }
+  heatShown_ = true;
+  applyVisibility();
+  if (worstRatio) *worstRatio = worst;
+  return true;
+}
+
+void LiveTessellation::hideHeatMap() {
+  heatShown_ = false;
+  applyVisibility();
 }
 
 }  // namespace cetview

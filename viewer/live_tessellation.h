@@ -47,15 +47,22 @@ class LiveTessellation {
   // Applies up to `byteBudget` bytes of finished face levels to the Scene (never waits).
   void poll(std::size_t byteBudget);
 
-  // Per-face measured deviation of the shown level divided by its tolerance (brep::measureFaces),
-  // once the stream is idle and every face shows targetLevel(); empty while that is not so.
-  std::vector<double> measureDeviationRatios(unsigned threads);
-  // The heat-map colour of a deviation ratio: green (0) through yellow to red (1 and above).
+  // Deviation heat map (DESIGN.md's promise made visible): each shown triangle is measured
+  // against the exact surface (brep::measureTriangles) and coloured by deviation / tolerance of the
+  // shown level, green (0) through yellow to red (1 and above), in kHeatBins colour bins. Drawn as
+  // extra engine parts that share the shown triangles' vertices; the model's own instances are
+  // hidden meanwhile. Returns false (nothing changed) until the stream is idle with every face at
+  // targetLevel(); then `worstRatio` gets the largest ratio.
+  static constexpr std::uint32_t kHeatBins = 16;
+  bool showHeatMap(unsigned threads, double* worstRatio = nullptr);
+  void hideHeatMap();
+  bool heatMapShown() const { return heatShown_; }
+  // The heat-map colour of a deviation ratio, and the bin a ratio falls into.
   static engine::Color8 heatColor(double ratio);
-  // Colours face f by heatColor(ratios[f]); instance colours are lifted so the faces show.
-  void applyHeatColors(const std::vector<double>& ratios);
-  // Restores every face's and instance's file colour (after a heat map).
-  void restoreFaceColors();
+  static std::uint32_t heatBin(double ratio);
+  // Instance visibility (the assembly tree), kept across heat map and angle restarts.
+  void setInstanceVisible(std::uint32_t instance, bool visible);
+  bool instanceVisible(std::uint32_t instance) const { return visible_[instance]; }
 
   const brep::Model& model() const { return *model_; }
   const ModelScene& modelScene() const { return *link_; }
@@ -89,6 +96,11 @@ class LiveTessellation {
   double diagonal_ = 1, finestAbsolute_ = 0, requested_ = 0, angleDeg_ = 20;
   unsigned threads_ = 1;
   int target_ = 0;
+  std::vector<bool> visible_;                       // per model instance
+  std::vector<engine::PartRange> heatParts_;        // per model part: one face per bin
+  std::vector<engine::InstanceId> heatInstances_;   // per model instance
+  bool heatShown_ = false;
+  void applyVisibility();
 };
 
 }  // namespace cetview

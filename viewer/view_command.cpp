@@ -153,10 +153,8 @@ class Viewer {
   engine::ViewStyle style_;
   bool heatMap_ = false;
   int heatLevel_ = -1;  // the level the heat colours were measured at (-1: none shown)
-  std::vector<double> heatRatios_;
   double heatWorst_ = 0;
   std::unique_ptr<TreeNode> tree_;
-  std::vector<bool> instanceVisible_;
 
   // Panels.
   bool showTessellation_ = true, showProgress_ = true, showDisplay_ = true, showModel_ = true, showStats_ = true;
@@ -227,7 +225,6 @@ void Viewer::buildTree() {
   tree_ = std::make_unique<TreeNode>();
   tree_->name = live_->model().source();
   const auto& instances = live_->model().instances();
-  instanceVisible_.assign(instances.size(), true);
   for (std::uint32_t i = 0; i < instances.size(); ++i) {
     TreeNode* node = tree_.get();
     // The path names the assemblies above the instance; the instance itself is a leaf.
@@ -254,10 +251,6 @@ void Viewer::setAngle(double degrees) {
   (void)r_.waitIdle();
   heatLevel_ = -1;
   if (std::string e = live_->setAngle(degrees); !e.empty()) status_ = e;
-  // The Scene was rebuilt: visibility toggles apply to the new instance ids.
-  for (std::uint32_t i = 0; i < instanceVisible_.size(); ++i) {
-    (void)r_.scene().setInstanceVisible(live_->modelScene().engineInstance(i), instanceVisible_[i]);
-  }
 }
 
 void Viewer::handleInput() {
@@ -467,14 +460,14 @@ void Viewer::drawDisplayPanel() {
                             : engine::DisplayMode::kWireframe;
   ImGui::Checkbox("file colours", &style_.fileColors);
   if (ImGui::Checkbox("deviation heat map", &heatMap_) && !heatMap_) {
-    live_->restoreFaceColors();
+    live_->hideHeatMap();
     heatLevel_ = -1;
   }
   if (heatMap_) {
     if (heatLevel_ < 0 || heatLevel_ != live_->targetLevel()) {
       ImGui::TextUnformatted("measuring when the level completes...");
     } else {
-      ImGui::Text("worst face: %.2f x tolerance", heatWorst_);
+      ImGui::Text("worst triangle: %.2f x tolerance", heatWorst_);
     }
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -504,7 +497,7 @@ void Viewer::drawDisplayPanel() {
 
 bool Viewer::anyVisible(const TreeNode& node) const {
   for (std::uint32_t i : node.instances) {
-    if (instanceVisible_[i]) return true;
+    if (live_->instanceVisible(i)) return true;
   }
   for (const auto& c : node.children) {
     if (anyVisible(*c)) return true;
@@ -513,10 +506,7 @@ bool Viewer::anyVisible(const TreeNode& node) const {
 }
 
 void Viewer::setInstancesVisible(const TreeNode& node, bool visible) {
-  for (std::uint32_t i : node.instances) {
-    instanceVisible_[i] = visible;
-    (void)r_.scene().setInstanceVisible(live_->modelScene().engineInstance(i), visible);
-  }
+  for (std::uint32_t i : node.instances) live_->setInstanceVisible(i, visible);
   for (const auto& c : node.children) setInstancesVisible(*c, visible);
 }
 
@@ -532,11 +522,8 @@ void Viewer::drawTreeNode(const TreeNode& node) {
     const auto& parts = live_->model().parts();
     for (std::uint32_t i : node.instances) {
       ImGui::PushID(static_cast<int>(i));
-      bool v = instanceVisible_[i];
-      if (ImGui::Checkbox("##i", &v)) {
-        instanceVisible_[i] = v;
-        (void)r_.scene().setInstanceVisible(live_->modelScene().engineInstance(i), v);
-      }
+      bool v = live_->instanceVisible(i);
+      if (ImGui::Checkbox("##i", &v)) live_->setInstanceVisible(i, v);
       ImGui::SameLine();
       const brep::PartInfo& part = parts[instances[i].part];
       const std::string& name = !instances[i].name.empty() ? instances[i].name : part.name;
@@ -597,12 +584,9 @@ void Viewer::drawStatsPanel() {
 
 void Viewer::updateHeatMap() {
   if (!heatMap_ || heatLevel_ == live_->targetLevel()) return;
-  std::vector<double> ratios = live_->measureDeviationRatios(cli_.threads);
-  if (ratios.empty()) return;  // the level is not complete yet
-  heatRatios_ = std::move(ratios);
-  heatWorst_ = heatRatios_.empty() ? 0 : *std::max_element(heatRatios_.begin(), heatRatios_.end());
-  live_->applyHeatColors(heatRatios_);
-  heatLevel_ = live_->targetLevel();
+  // The slider moved: show the model itself until the new level is complete and measured.
+  if (live_->heatMapShown()) live_->hideHeatMap();
+  if (live_->showHeatMap(cli_.threads, &heatWorst_)) heatLevel_ = live_->targetLevel();
 }
 
 bool Viewer::stepScript() {
@@ -661,7 +645,7 @@ bool Viewer::stepScript() {
       style_.fileColors = *on;
     } else {
       if (heatMap_ && !*on) {
-        live_->restoreFaceColors();
+        live_->hideHeatMap();
         heatLevel_ = -1;
       }
       heatMap_ = *on;

@@ -3,9 +3,13 @@
 // an angle change restarts coarse; the heat map's measured deviations stay within tolerance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
+#include <cmath>
+
+#include "brep/measure.h"
 #include "live_tessellation.h"
 
 namespace cetview::test {
@@ -61,17 +65,37 @@ TEST(LiveTessellation, SlidersRetargetOneScheduleAndAnglesRestart) {
   ASSERT_TRUE(settle(live));
   EXPECT_GT(live.consumer().shownTriangles(), fineTriangles);
 
-  // The heat map's numbers: measured deviation against the level's tolerance, within it.
-  const std::vector<double> ratios = live.measureDeviationRatios(2);
-  ASSERT_EQ(ratios.size(), live.model().faces().size());
-  for (double r : ratios) {
-    EXPECT_GE(r, 0.0);
-    EXPECT_LE(r, 1.0);
+  // The heat map: every shown triangle measured against the exact surface, within the level's
+  // tolerance, drawn by extra heat parts while the model's own instance is hidden.
+  const std::uint32_t instancesBefore = scene.instanceCount();
+  double worst = -1;
+  ASSERT_TRUE(live.showHeatMap(2, &worst));
+  EXPECT_TRUE(live.heatMapShown());
+  EXPECT_GT(worst, 0.0);
+  EXPECT_LE(worst, 1.0);
+  EXPECT_EQ(scene.instanceCount(), 2 * instancesBefore);
+  const std::vector<std::vector<float>> perTriangle = brep::measureTriangles(live.tessellator(), live.targetLevel(), 2);
+  std::size_t measured = 0;
+  double largest = 0;
+  for (std::uint32_t f = 0; f < perTriangle.size(); ++f) {
+    EXPECT_EQ(perTriangle[f].size() * 3, live.modelScene().shownIndices(f).size()) << "face " << f;
+    measured += perTriangle[f].size();
+    for (float d : perTriangle[f]) largest = std::max(largest, static_cast<double>(d));
   }
-  live.applyHeatColors(ratios);
-  EXPECT_EQ(scene.faceColor(live.modelScene().engineFace(0)).r, LiveTessellation::heatColor(ratios[0]).r);
-  live.restoreFaceColors();
-  EXPECT_EQ(scene.faceColor(live.modelScene().engineFace(0)).r, toColor8(live.model().faces()[0].color).r);
+  EXPECT_EQ(measured, live.consumer().shownTriangles());
+  EXPECT_NEAR(largest / live.levelTolerance(live.targetLevel()), worst, 1e-6);
+  // The per-triangle maximum is the per-face measure's.
+  const std::vector<brep::FaceQuality> perFace = brep::measureFaces(live.tessellator(), live.targetLevel(), 2);
+  for (std::uint32_t f = 0; f < perFace.size(); ++f) {
+    double faceMax = 0;
+    for (float d : perTriangle[f]) faceMax = std::max(faceMax, static_cast<double>(d));
+    EXPECT_NEAR(faceMax, perFace[f].maxDeviation, 1e-6 * live.diagonal()) << "face " << f;
+  }
+  live.hideHeatMap();
+  EXPECT_FALSE(live.heatMapShown());
+  ASSERT_TRUE(live.showHeatMap(2));  // again: reuses the heat parts
+  EXPECT_EQ(scene.instanceCount(), 2 * instancesBefore);
+  live.hideHeatMap();
 
   // A new angle re-plans: the scene restarts and the same deflection is reached again.
   const double requested = live.requestedDeflection();
@@ -83,7 +107,11 @@ TEST(LiveTessellation, SlidersRetargetOneScheduleAndAnglesRestart) {
   EXPECT_GT(live.consumer().shownTriangles(), 0u);
 }
 
-TEST(LiveTessellation, HeatColoursRunFromGreenToRed) {
+TEST(LiveTessellation, HeatBinsAndColoursRunFromGreenToRed) {
+  EXPECT_EQ(LiveTessellation::heatBin(0.0), 0u);
+  EXPECT_EQ(LiveTessellation::heatBin(0.999), LiveTessellation::kHeatBins - 2);
+  EXPECT_EQ(LiveTessellation::heatBin(1.0), LiveTessellation::kHeatBins - 1);
+  EXPECT_EQ(LiveTessellation::heatBin(INFINITY), LiveTessellation::kHeatBins - 1);
   const engine::Color8 ok = LiveTessellation::heatColor(0.0);
   const engine::Color8 bad = LiveTessellation::heatColor(1.0);
   const engine::Color8 worse = LiveTessellation::heatColor(3.0);

@@ -44,13 +44,19 @@ std::string writeScript(const std::string& name, const std::string& text) {
 
 // Runs `cetview ARGS` in a fresh X server; returns the exit code, with stdout+stderr in `log`.
 int runViewer(const std::string& args, std::string& log) {
-  const std::string logPath = outputPath("viewer.log");
+  const std::string logPath = outputPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
   const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) + " " + args +
                               " > " + logPath + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(logPath);
-  log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  int code = -1;
+  // xvfb-run -a can race another test's server for a display number: try again then.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const int status = std::system(command.c_str());
+    std::ifstream in(logPath);
+    log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (log.find("xvfb-run: error") == std::string::npos && log.find("Server is already active") == std::string::npos) break;
+  }
+  return code;
 }
 
 struct Pixel {
