@@ -13,7 +13,9 @@ constexpr float kOrbitRadiansPerPixel = 0.3f * 3.14159265f / 180.0f;
 constexpr float kZoomPerStep = 0.85f;
 
 // Smoothstep easing: starts and ends at rest.
-float ease(float t) { return t * t * (3.0f - 2.0f * t); }
+float ease(float t) {
+  return t * t * (3.0f - 2.0f * t);
+}
 
 // Rotation taking (direction, up) of `a` to those of `b`, interpolated by quaternion slerp.
 glm::quat frameOf(const engine::Camera& c) {

@@ -5,13 +5,13 @@
 #include <optional>
 
 #include "brep/measure.h"
-#include "engine/types.h"
 #include "brep/tolerance.h"
+#include "engine/types.h"
 
 namespace cetview {
 
-LiveTessellation::CreateResult LiveTessellation::create(std::unique_ptr<brep::Model> model, engine::Scene& scene,
-                                                        const LiveOptions& options) {
+LiveTessellation::CreateResult LiveTessellation::create(std::unique_ptr<brep::Model> model,
+                                                        engine::Scene& scene, const LiveOptions& options) {
   CreateResult out;
   if (!model) {
     out.error = "no model";
@@ -30,7 +30,9 @@ LiveTessellation::CreateResult LiveTessellation::create(std::unique_ptr<brep::Mo
   return out;
 }
 
-LiveTessellation::~LiveTessellation() { stop(); }
+LiveTessellation::~LiveTessellation() {
+  stop();
+}
 
 void LiveTessellation::stop() {
   consumer_.reset();
@@ -88,7 +90,9 @@ std::string LiveTessellation::setAngle(double degrees) {
   return start();
 }
 
-void LiveTessellation::poll(std::size_t byteBudget) { consumer_->poll(byteBudget, *link_); }
+void LiveTessellation::poll(std::size_t byteBudget) {
+  consumer_->poll(byteBudget, *link_);
+}
 
 double LiveTessellation::secondsSinceStart() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
@@ -117,13 +121,15 @@ void LiveTessellation::setInstanceVisible(std::uint32_t instance, bool visible) 
 void LiveTessellation::applyVisibility() {
   for (std::uint32_t i = 0; i < visible_.size(); ++i) {
     (void)scene_.setInstanceVisible(link_->engineInstance(i), visible_[i] && !heatShown_);
-    if (i < heatInstances_.size()) (void)scene_.setInstanceVisible(heatInstances_[i], visible_[i] && heatShown_);
+    if (i < heatInstances_.size())
+      (void)scene_.setInstanceVisible(heatInstances_[i], visible_[i] && heatShown_);
   }
 }
 
 bool LiveTessellation::showHeatMap(unsigned threads, double* worstRatio) {
   if (!producer_->idle() || consumer_->completeLevel() < target_) return false;
-  const std::vector<std::vector<float>> deviation = brep::measureTriangles(*tess_, target_, std::max(1u, threads));
+  const std::vector<std::vector<float>> deviation =
+      brep::measureTriangles(*tess_, target_, std::max(1u, threads));
   const double tolerance = levelTolerance(target_);
   const brep::Model& m = *model_;
   if (heatParts_.empty()) {

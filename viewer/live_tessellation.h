@@ -22,8 +22,8 @@
 namespace cetview {
 
 struct LiveOptions {
-  double finestRelative = 1e-4;   // the slider's finest chordal deflection, fraction of the diagonal
-  double chordalAbsolute = 0;     // initial deflection (model units); 0: 0.1% of the diagonal
+  double finestRelative = 1e-4;  // the slider's finest chordal deflection, fraction of the diagonal
+  double chordalAbsolute = 0;    // initial deflection (model units); 0: 0.1% of the diagonal
   double angleDeg = 20.0;
   unsigned threads = 1;
 };
@@ -35,7 +35,8 @@ class LiveTessellation {
     std::string error;
   };
   // Clears `scene`, adds the model to it and starts streaming towards options.chordalAbsolute.
-  static CreateResult create(std::unique_ptr<brep::Model> model, engine::Scene& scene, const LiveOptions& options);
+  static CreateResult create(std::unique_ptr<brep::Model> model, engine::Scene& scene,
+                             const LiveOptions& options);
   ~LiveTessellation();
 
   // Retargets to the coarsest level whose tolerance is at most `absolute` (the finest level when
@@ -72,7 +73,9 @@ class LiveTessellation {
   bool idle() const { return producer_->idle(); }
   int targetLevel() const { return target_; }
   int lastLevel() const { return tess_->lastLevel(); }
-  double levelTolerance(int level) const { return tess_->schedule()[static_cast<std::size_t>(level)].chordal; }
+  double levelTolerance(int level) const {
+    return tess_->schedule()[static_cast<std::size_t>(level)].chordal;
+  }
   double diagonal() const { return diagonal_; }
   double finestAbsolute() const { return finestAbsolute_; }
   double coarsestAbsolute() const { return levelTolerance(0); }
@@ -82,7 +85,8 @@ class LiveTessellation {
   double secondsSinceStart() const;
 
  private:
-  LiveTessellation(std::unique_ptr<brep::Model> model, engine::Scene& scene) : model_(std::move(model)), scene_(scene) {}
+  LiveTessellation(std::unique_ptr<brep::Model> model, engine::Scene& scene)
+      : model_(std::move(model)), scene_(scene) {}
   std::string start();
   void stop();
 
@@ -96,9 +100,9 @@ class LiveTessellation {
   double diagonal_ = 1, finestAbsolute_ = 0, requested_ = 0, angleDeg_ = 20;
   unsigned threads_ = 1;
   int target_ = 0;
-  std::vector<bool> visible_;                       // per model instance
-  std::vector<engine::PartRange> heatParts_;        // per model part: one face per bin
-  std::vector<engine::InstanceId> heatInstances_;   // per model instance
+  std::vector<bool> visible_;                      // per model instance
+  std::vector<engine::PartRange> heatParts_;       // per model part: one face per bin
+  std::vector<engine::InstanceId> heatInstances_;  // per model instance
   bool heatShown_ = false;
   void applyVisibility();
 };

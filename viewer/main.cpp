@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   const bool help = !args.empty() && (args[0] == "-h" || args[0] == "--help" || args[0] == "--version");
   bool known = false;
   if (!args.empty()) {
-    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) known = known || sub->check_name(args[0]);
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+      known = known || sub->check_name(args[0]);
   }
   if (!help && !known) args.insert(args.begin(), "view");
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed

@@ -12,7 +12,8 @@ namespace {
 // The ids and index ranges below come from the model and the consumer's checks, so the Scene can
 // only refuse them if a contract is broken: say so loudly rather than draw a wrong picture silently.
 void expectOk(const engine::Status& status, const char* what) {
-  if (!status) std::fprintf(stderr, "cetview: internal error: %s: %s\n", what, status.error().message.c_str());
+  if (!status)
+    std::fprintf(stderr, "cetview: internal error: %s: %s\n", what, status.error().message.c_str());
 }
 }  // namespace
 
@@ -49,7 +50,8 @@ ModelScene::ModelScene(const brep::Model& model, engine::Scene& scene) : scene_(
       const std::uint32_t f = part.firstFace + i;
       faceIds_[f] = range.face(i);
       // Faces with no colour of their own take the part's colour (already the part default).
-      if (faces[f].hasOwnColor) expectOk(scene_.setFaceColor(range.face(i), toColor8(faces[f].color)), "face colour");
+      if (faces[f].hasOwnColor)
+        expectOk(scene_.setFaceColor(range.face(i), toColor8(faces[f].color)), "face colour");
     }
     for (std::uint32_t i = 0; i < part.edgeCount; ++i) edgeIds_[part.firstEdge + i] = range.edge(i);
   }
@@ -57,12 +59,15 @@ ModelScene::ModelScene(const brep::Model& model, engine::Scene& scene) : scene_(
     auto id = scene_.addInstance(partIds[instance.part], instanceTransform(instance));
     if (!id) continue;  // an unknown part cannot happen: parts were added above
     instanceIds_.push_back(*id);
-    if (instance.hasColor) expectOk(scene_.setInstanceColor(*id, toColor8(instance.color)), "instance colour");
+    if (instance.hasColor)
+      expectOk(scene_.setInstanceColor(*id, toColor8(instance.color)), "instance colour");
   }
   const brep::Bounds b = model.bounds();
   if (!b.empty()) {
-    bounds_.add(glm::vec3(static_cast<float>(b.min[0]), static_cast<float>(b.min[1]), static_cast<float>(b.min[2])));
-    bounds_.add(glm::vec3(static_cast<float>(b.max[0]), static_cast<float>(b.max[1]), static_cast<float>(b.max[2])));
+    bounds_.add(
+        glm::vec3(static_cast<float>(b.min[0]), static_cast<float>(b.min[1]), static_cast<float>(b.min[2])));
+    bounds_.add(
+        glm::vec3(static_cast<float>(b.max[0]), static_cast<float>(b.max[1]), static_cast<float>(b.max[2])));
   }
 }
 

@@ -47,7 +47,8 @@ struct ViewCli {
   std::string size = "1280x800";
   std::string deflection = "0.1%";
   std::string angle = "20";
-  unsigned threads = std::max(1u, std::thread::hardware_concurrency() > 1 ? std::thread::hardware_concurrency() - 1 : 1u);
+  unsigned threads =
+      std::max(1u, std::thread::hardware_concurrency() > 1 ? std::thread::hardware_concurrency() - 1 : 1u);
   std::string device;
   std::string view = "iso";
   std::string projection = "perspective";
@@ -100,7 +101,9 @@ double residentMiB() {
   return static_cast<double>(resident) * 4096.0 / (1024.0 * 1024.0);
 }
 
-ImVec4 toImVec4(engine::Color8 c) { return ImVec4(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f); }
+ImVec4 toImVec4(engine::Color8 c) {
+  return ImVec4(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
+}
 engine::Color8 fromFloat3(const float* c) {
   auto b = [](float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
   return engine::Color8{b(c[0]), b(c[1]), b(c[2]), 255};
@@ -157,7 +160,8 @@ class Viewer {
   std::unique_ptr<TreeNode> tree_;
 
   // Panels.
-  bool showTessellation_ = true, showProgress_ = true, showDisplay_ = true, showModel_ = true, showStats_ = true;
+  bool showTessellation_ = true, showProgress_ = true, showDisplay_ = true, showModel_ = true,
+       showStats_ = true;
   bool absoluteUnits_ = false;
   float angleSlider_ = 20.0f;
   char openPath_[1024] = {};
@@ -194,8 +198,11 @@ std::string Viewer::openModel(const std::string& path) {
   // The requested deflection: relative to this model's diagonal, or absolute as given.
   double absolute = 0;
   const double diagonal = loaded.model->bounds().diagonal();
-  if (std::string e = brep::resolveDeflection(initialParams_.chordal, diagonal, absolute); !e.empty()) return e;
-  if (live_) absolute = live_->requestedDeflection() / live_->diagonal() * diagonal;  // keep the slider's relative position
+  if (std::string e = brep::resolveDeflection(initialParams_.chordal, diagonal, absolute); !e.empty())
+    return e;
+  if (live_)
+    absolute =
+        live_->requestedDeflection() / live_->diagonal() * diagonal;  // keep the slider's relative position
   (void)r_.waitIdle();
   live_.reset();
   heatLevel_ = -1;
@@ -211,8 +218,9 @@ std::string Viewer::openModel(const std::string& path) {
   const glm::vec2 vp = viewport();
   const float aspect = vp.y > 0 ? vp.x / vp.y : 1.0f;
   camera_.setFitMargin(kFitMargin);
-  camera_.reset(engine::standardView(initialView_, live_->modelScene().bounds(), aspect, camera_.camera().projection),
-                live_->modelScene().bounds());
+  camera_.reset(
+      engine::standardView(initialView_, live_->modelScene().bounds(), aspect, camera_.camera().projection),
+      live_->modelScene().bounds());
   camera_.viewStandard(initialView_, aspect, 0.0f);
   glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
   std::printf("opened: %s (%zu faces, %d levels down to %.6g)\n", live_->model().source().c_str(),
@@ -263,7 +271,8 @@ void Viewer::handleInput() {
     const glm::vec2 delta = glm::vec2(io.MouseDelta.x, io.MouseDelta.y) * scale;
     const glm::vec2 cursor = glm::vec2(io.MousePos.x, io.MousePos.y) * scale;
     const bool moved = delta.x != 0.0f || delta.y != 0.0f;
-    if (moved && (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))) {
+    if (moved && (ImGui::IsMouseDown(ImGuiMouseButton_Middle) ||
+                  (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))) {
       camera_.pan(delta, vp);
     } else if (moved && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       camera_.orbit(delta);
@@ -289,10 +298,11 @@ void Viewer::handleInput() {
                                 : engine::Projection::kPerspective);
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_D, false)) {
-      style_.mode = style_.mode == engine::DisplayMode::kShaded           ? engine::DisplayMode::kShadedWithEdges
-                    : style_.mode == engine::DisplayMode::kShadedWithEdges && glue_.device().features.fillModeNonSolid
-                        ? engine::DisplayMode::kWireframe
-                        : engine::DisplayMode::kShaded;
+      style_.mode =
+          style_.mode == engine::DisplayMode::kShaded ? engine::DisplayMode::kShadedWithEdges
+          : style_.mode == engine::DisplayMode::kShadedWithEdges && glue_.device().features.fillModeNonSolid
+              ? engine::DisplayMode::kWireframe
+              : engine::DisplayMode::kShaded;
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) pendingScreenshot_ = screenshotName();
   }
@@ -318,13 +328,14 @@ void Viewer::drawMenu() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    const engine::StandardView views[] = {engine::StandardView::kIso,  engine::StandardView::kFront,
-                                          engine::StandardView::kBack, engine::StandardView::kLeft,
+    const engine::StandardView views[] = {engine::StandardView::kIso,   engine::StandardView::kFront,
+                                          engine::StandardView::kBack,  engine::StandardView::kLeft,
                                           engine::StandardView::kRight, engine::StandardView::kTop,
                                           engine::StandardView::kBottom};
     const char* shortcuts[] = {"0", "1", "2", "3", "4", "5", "6"};
     for (int i = 0; i < 7; ++i) {
-      if (ImGui::MenuItem(engine::viewName(views[i]), shortcuts[i])) camera_.viewStandard(views[i], aspect, kTransitionSeconds);
+      if (ImGui::MenuItem(engine::viewName(views[i]), shortcuts[i]))
+        camera_.viewStandard(views[i], aspect, kTransitionSeconds);
     }
     ImGui::Separator();
     if (ImGui::MenuItem("Fit all", "F")) camera_.fitAll(aspect, kTransitionSeconds);
@@ -351,7 +362,8 @@ void Viewer::drawMenu() {
   if (ImGui::BeginPopupModal("Open model", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::TextUnformatted("STEP, IGES or .brep file (or drop one onto the window)");
     ImGui::SetNextItemWidth(420.0f);
-    const bool enter = ImGui::InputText("##path", openPath_, sizeof openPath_, ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter =
+        ImGui::InputText("##path", openPath_, sizeof openPath_, ImGuiInputTextFlags_EnterReturnsTrue);
     if (ImGui::Button("Open") || enter) {
       pendingOpen_ = openPath_;
       ImGui::CloseCurrentPopup();
@@ -379,7 +391,8 @@ void Viewer::drawTessellationPanel() {
   const double unit = absoluteUnits_ ? 1.0 : 100.0 / diag;
   float value = static_cast<float>(live_->requestedDeflection() * unit);
   const float lo = static_cast<float>(live_->finestAbsolute() * unit);
-  const float hi = static_cast<float>(std::max(live_->coarsestAbsolute(), live_->finestAbsolute() * 2) * unit);
+  const float hi =
+      static_cast<float>(std::max(live_->coarsestAbsolute(), live_->finestAbsolute() * 2) * unit);
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::SliderFloat("##chordal", &value, lo, hi, absoluteUnits_ ? "%.5g" : "%.4f %%",
                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
@@ -439,7 +452,8 @@ void Viewer::drawProgressPanel() {
 
 void Viewer::drawDisplayPanel() {
   const glm::vec2 vp = viewport();
-  ImGui::SetNextWindowPos(ImVec2(vp.x - kPanelWidth - kMargin, kMenuHeight + kMargin), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(vp.x - kPanelWidth - kMargin, kMenuHeight + kMargin),
+                          ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 200.0f), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Display", &showDisplay_)) {
     ImGui::End();
@@ -447,7 +461,7 @@ void Viewer::drawDisplayPanel() {
   }
   int mode = static_cast<int>(style_.mode == engine::DisplayMode::kShaded            ? 0
                               : style_.mode == engine::DisplayMode::kShadedWithEdges ? 1
-                                                                                      : 2);
+                                                                                     : 2);
   ImGui::RadioButton("shaded", &mode, 0);
   ImGui::SameLine();
   ImGui::RadioButton("+ edges", &mode, 1);
@@ -455,7 +469,7 @@ void Viewer::drawDisplayPanel() {
     ImGui::SameLine();
     ImGui::RadioButton("wireframe", &mode, 2);
   }
-  style_.mode = mode == 0 ? engine::DisplayMode::kShaded
+  style_.mode = mode == 0   ? engine::DisplayMode::kShaded
                 : mode == 1 ? engine::DisplayMode::kShadedWithEdges
                             : engine::DisplayMode::kWireframe;
   ImGui::Checkbox("file colours", &style_.fileColors);
@@ -474,8 +488,8 @@ void Viewer::drawDisplayPanel() {
     const float w = ImGui::GetContentRegionAvail().x;
     for (int i = 0; i < 32; ++i) {
       const engine::Color8 c = LiveTessellation::heatColor(i / 31.0);
-      draw->AddRectFilled(ImVec2(at.x + w * i / 32.0f, at.y), ImVec2(at.x + w * (i + 1) / 32.0f, at.y + 10.0f),
-                          IM_COL32(c.r, c.g, c.b, 255));
+      draw->AddRectFilled(ImVec2(at.x + w * i / 32.0f, at.y),
+                          ImVec2(at.x + w * (i + 1) / 32.0f, at.y + 10.0f), IM_COL32(c.r, c.g, c.b, 255));
     }
     ImGui::Dummy(ImVec2(w, 12.0f));
     ImGui::TextUnformatted("0                 deviation / tolerance               1");
@@ -484,10 +498,12 @@ void Viewer::drawDisplayPanel() {
   if (ImGui::Checkbox("orthographic", &ortho)) {
     camera_.setProjection(ortho ? engine::Projection::kOrthographic : engine::Projection::kPerspective);
   }
-  float top[3] = {style_.backgroundTop.r / 255.0f, style_.backgroundTop.g / 255.0f, style_.backgroundTop.b / 255.0f};
+  float top[3] = {style_.backgroundTop.r / 255.0f, style_.backgroundTop.g / 255.0f,
+                  style_.backgroundTop.b / 255.0f};
   float bottom[3] = {style_.backgroundBottom.r / 255.0f, style_.backgroundBottom.g / 255.0f,
                      style_.backgroundBottom.b / 255.0f};
-  if (ImGui::ColorEdit3("background top", top, ImGuiColorEditFlags_NoInputs)) style_.backgroundTop = fromFloat3(top);
+  if (ImGui::ColorEdit3("background top", top, ImGuiColorEditFlags_NoInputs))
+    style_.backgroundTop = fromFloat3(top);
   if (ImGui::ColorEdit3("background bottom", bottom, ImGuiColorEditFlags_NoInputs)) {
     style_.backgroundBottom = fromFloat3(bottom);
   }
@@ -515,7 +531,8 @@ void Viewer::drawTreeNode(const TreeNode& node) {
   bool visible = anyVisible(node);
   if (ImGui::Checkbox("##v", &visible)) setInstancesVisible(node, visible);
   ImGui::SameLine();
-  const bool open = ImGui::TreeNodeEx(node.name.empty() ? "(unnamed)" : node.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+  const bool open =
+      ImGui::TreeNodeEx(node.name.empty() ? "(unnamed)" : node.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
   if (open) {
     for (const auto& c : node.children) drawTreeNode(*c);
     const auto& instances = live_->model().instances();
@@ -546,7 +563,8 @@ void Viewer::drawModelPanel() {
   }
   const brep::Model& m = live_->model();
   ImGui::TextWrapped("%s", m.source().c_str());
-  ImGui::Text("%zu faces, %zu parts, %zu instances", m.faces().size(), m.parts().size(), m.instances().size());
+  ImGui::Text("%zu faces, %zu parts, %zu instances", m.faces().size(), m.parts().size(),
+              m.instances().size());
   const brep::Bounds b = m.bounds();
   if (!b.empty()) {
     ImGui::Text("min %.4g %.4g %.4g", b.min[0], b.min[1], b.min[2]);
@@ -663,7 +681,8 @@ bool Viewer::stepScript() {
     if (!panel || !on) return bad("panel tessellation|progress|display|model|stats on|off");
     *panel = *on;
   } else if (c.name == "orbit" || c.name == "pan") {
-    if (!number(c.args[0], a) || !number(c.args[1], b)) return bad("'" + c.name + "' takes two numbers (pixels)");
+    if (!number(c.args[0], a) || !number(c.args[1], b))
+      return bad("'" + c.name + "' takes two numbers (pixels)");
     if (c.name == "orbit") {
       camera_.orbit(glm::vec2(static_cast<float>(a), static_cast<float>(b)));
     } else {
@@ -679,7 +698,8 @@ bool Viewer::stepScript() {
     } else if (c.args[1] == "target") {
       waitLevel_ = -1;
     } else {
-      if (!number(c.args[1], a) || a < 0 || a > 64) return bad("'wait level' takes a level number or 'target'");
+      if (!number(c.args[1], a) || a < 0 || a > 64)
+        return bad("'wait level' takes a level number or 'target'");
       waitLevel_ = static_cast<int>(a);
     }
   } else if (c.name == "screenshot") {
@@ -695,12 +715,14 @@ bool Viewer::stepScript() {
 int Viewer::run() {
   if (!parseProjection(cli_.projection)) return fail(2, "--projection must be perspective or orthographic");
   const auto view = engine::parseStandardView(cli_.view);
-  if (!view) return fail(2, "--view '" + cli_.view + "' must be iso, front, back, left, right, top or bottom");
+  if (!view)
+    return fail(2, "--view '" + cli_.view + "' must be iso, front, back, left, right, top or bottom");
   initialView_ = *view;
   const auto display = parseDisplay(cli_.display);
   if (!display) return fail(2, "--display must be shaded, shaded-edges or wireframe");
   style_.mode = *display;
-  if (std::string e = brep::parseDeflection(cli_.deflection, initialParams_.chordal); !e.empty()) return fail(2, e);
+  if (std::string e = brep::parseDeflection(cli_.deflection, initialParams_.chordal); !e.empty())
+    return fail(2, e);
   if (std::string e = brep::parseAngle(cli_.angle, initialParams_.angleDeg); !e.empty()) return fail(2, e);
   angleSlider_ = static_cast<float>(initialParams_.angleDeg);
   if (cli_.frames < 0) return fail(2, "--frames must be 0 (no limit) or more");
@@ -760,7 +782,8 @@ int Viewer::run() {
     if (!script_.empty()) stepScript();
     glue_.finishImGuiFrame();
 
-    const bool lastFrame = quit_ || (cli_.frames > 0 && frame_ + 1 >= static_cast<std::uint64_t>(cli_.frames));
+    const bool lastFrame =
+        quit_ || (cli_.frames > 0 && frame_ + 1 >= static_cast<std::uint64_t>(cli_.frames));
     std::string shot = pendingScreenshot_;
     if (lastFrame && !cli_.screenshot.empty()) shot = cli_.screenshot;
     engine::ViewStyle style = style_;
@@ -796,14 +819,16 @@ int Viewer::run() {
   if (auto s = r_.waitIdle(); !s) return fail(1, s.error().message);
   if (exitCode_ != 0) return exitCode_;
   if (cli_.validate && glue_.validationCount() > 0) {
-    return fail(1, "the validation layer reported " + std::to_string(glue_.validationCount()) + " problem(s)");
+    return fail(1,
+                "the validation layer reported " + std::to_string(glue_.validationCount()) + " problem(s)");
   }
   return 0;
 }
 
 int runView(const ViewCli& cli) {
   int width = 0, height = 0;
-  if (!parseSize(cli.size, width, height)) return fail(2, "--size '" + cli.size + "' must be WxH, at least 200x150");
+  if (!parseSize(cli.size, width, height))
+    return fail(2, "--size '" + cli.size + "' must be WxH, at least 200x150");
   if (cli.threads < 1 || cli.threads > 256) return fail(2, "--threads must be 1 to 256");
   WindowOptions options;
   options.width = width;

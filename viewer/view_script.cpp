@@ -12,10 +12,10 @@ struct Arity {
   int min, max;
 };
 constexpr Arity kCommands[] = {
-    {"deflection", 1, 1}, {"angle", 1, 1},  {"view", 1, 1}, {"projection", 1, 1}, {"display", 1, 1},
-    {"colors", 1, 1},     {"heatmap", 1, 1}, {"fit", 0, 0},  {"panel", 2, 2},      {"orbit", 2, 2},
-    {"pan", 2, 2},        {"zoom", 1, 1},    {"wait", 2, 2}, {"screenshot", 1, 1}, {"open", 1, 1},
-    {"quit", 0, 0},
+    {"deflection", 1, 1}, {"angle", 1, 1},      {"view", 1, 1},    {"projection", 1, 1},
+    {"display", 1, 1},    {"colors", 1, 1},     {"heatmap", 1, 1}, {"fit", 0, 0},
+    {"panel", 2, 2},      {"orbit", 2, 2},      {"pan", 2, 2},     {"zoom", 1, 1},
+    {"wait", 2, 2},       {"screenshot", 1, 1}, {"open", 1, 1},    {"quit", 0, 0},
 };
 
 }  // namespace
@@ -45,8 +45,8 @@ ScriptParse parseScript(const std::string& text, const std::string& fileName) {
     const int n = static_cast<int>(cmd.args.size());
     if (n < arity->min || n > arity->max) {
       out.error = where + "'" + cmd.name + "' takes " + std::to_string(arity->min) +
-                  (arity->max != arity->min ? " to " + std::to_string(arity->max) : "") + " argument(s), not " +
-                  std::to_string(n);
+                  (arity->max != arity->min ? " to " + std::to_string(arity->max) : "") +
+                  " argument(s), not " + std::to_string(n);
       return out;
     }
     if (cmd.name == "wait" && cmd.args[0] != "level" && cmd.args[0] != "frames") {

@@ -6,19 +6,21 @@
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 namespace cetview {
 namespace {
 
 void checkImGuiVk(VkResult r) {
-  if (r != VK_SUCCESS) std::fprintf(stderr, "cetview: ImGui Vulkan backend: VkResult %d\n", static_cast<int>(r));
+  if (r != VK_SUCCESS)
+    std::fprintf(stderr, "cetview: ImGui Vulkan backend: VkResult %d\n", static_cast<int>(r));
 }
 
 bool isSrgb(VkFormat format) {
-  return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
+  return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB ||
+         format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
 }
 
 std::string vkFailed(const char* what, VkResult r) {
@@ -58,7 +60,8 @@ std::string WindowGlue::init(const WindowOptions& options) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
   if (!window_) return "glfwCreateWindow failed";
-  if (VkResult r = glfwCreateWindowSurface(instance_.instance, window_, nullptr, &surface_); r != VK_SUCCESS) {
+  if (VkResult r = glfwCreateWindowSurface(instance_.instance, window_, nullptr, &surface_);
+      r != VK_SUCCESS) {
     return vkFailed("glfwCreateWindowSurface", r);
   }
 
@@ -77,7 +80,8 @@ std::string WindowGlue::init(const WindowOptions& options) {
       [w] {
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(w, &fw, &fh);
-        return VkExtent2D{static_cast<std::uint32_t>(std::max(0, fw)), static_cast<std::uint32_t>(std::max(0, fh))};
+        return VkExtent2D{static_cast<std::uint32_t>(std::max(0, fw)),
+                          static_cast<std::uint32_t>(std::max(0, fh))};
       },
       rendererOptions);
   if (!renderer) return renderer.error().message;
@@ -126,7 +130,8 @@ std::string WindowGlue::init(const WindowOptions& options) {
   info.ImageCount = info.MinImageCount + 1;
   info.MSAASamples = renderer_->samples();
   info.CheckVkResultFn = checkImGuiVk;
-  if (!ImGui_ImplVulkan_Init(&info, renderer_->renderPass())) return "ImGui's Vulkan backend did not initialise";
+  if (!ImGui_ImplVulkan_Init(&info, renderer_->renderPass()))
+    return "ImGui's Vulkan backend did not initialise";
   imguiVulkan_ = true;
 
   // Font atlas upload: one command buffer, submitted and waited here, before the first frame.
@@ -199,6 +204,8 @@ void WindowGlue::newImGuiFrame() {
   ImGui::NewFrame();
 }
 
-void WindowGlue::finishImGuiFrame() { ImGui::Render(); }
+void WindowGlue::finishImGuiFrame() {
+  ImGui::Render();
+}
 
 }  // namespace cetview

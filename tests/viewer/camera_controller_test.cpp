@@ -23,7 +23,8 @@ engine::Bounds unitBox() {
 
 // Pixel position of world point p (top-left origin, y down).
 glm::vec2 project(const Camera& c, glm::vec3 p, glm::vec2 viewport) {
-  const glm::vec4 clip = engine::projectionMatrix(c, viewport.x / viewport.y) * engine::viewMatrix(c) * glm::vec4(p, 1.0f);
+  const glm::vec4 clip =
+      engine::projectionMatrix(c, viewport.x / viewport.y) * engine::viewMatrix(c) * glm::vec4(p, 1.0f);
   const glm::vec2 ndc(clip.x / clip.w, clip.y / clip.w);
   return (ndc * 0.5f + 0.5f) * viewport;
 }
@@ -31,7 +32,8 @@ glm::vec2 project(const Camera& c, glm::vec3 p, glm::vec2 viewport) {
 class CameraControllerTest : public ::testing::TestWithParam<Projection> {
  protected:
   void SetUp() override {
-    controller.reset(engine::standardView(engine::StandardView::kIso, unitBox(), vp.x / vp.y, GetParam()), unitBox());
+    controller.reset(engine::standardView(engine::StandardView::kIso, unitBox(), vp.x / vp.y, GetParam()),
+                     unitBox());
   }
   CameraController controller;
   glm::vec2 vp{960.0f, 600.0f};
@@ -42,15 +44,16 @@ TEST_P(CameraControllerTest, ZoomKeepsThePointUnderTheCursor) {
   const glm::vec2 cursor(700.0f, 150.0f);
   // The point on the target plane under the cursor.
   const glm::vec3 right = glm::normalize(glm::cross(c.direction, c.up));
-  const float halfH = c.projection == Projection::kOrthographic ? c.orthoHeight * 0.5f
-                                                                : c.distance * std::tan(c.fovY * 0.5f);
+  const float halfH =
+      c.projection == Projection::kOrthographic ? c.orthoHeight * 0.5f : c.distance * std::tan(c.fovY * 0.5f);
   const glm::vec2 ndc = cursor / vp * 2.0f - 1.0f;
   const glm::vec3 p = c.target + right * (ndc.x * halfH * vp.x / vp.y) - c.up * (ndc.y * halfH);
   ASSERT_NEAR(glm::distance(project(c, p, vp), cursor), 0.0f, 0.05f);
   const float before = c.projection == Projection::kOrthographic ? c.orthoHeight : c.distance;
   controller.zoom(2.0f, cursor, vp);
-  const float after = controller.camera().projection == Projection::kOrthographic ? controller.camera().orthoHeight
-                                                                                  : controller.camera().distance;
+  const float after = controller.camera().projection == Projection::kOrthographic
+                          ? controller.camera().orthoHeight
+                          : controller.camera().distance;
   EXPECT_LT(after, before * 0.75f);  // closer
   EXPECT_NEAR(glm::distance(project(controller.camera(), p, vp), cursor), 0.0f, 0.05f);
 }
@@ -92,14 +95,15 @@ TEST_P(CameraControllerTest, TransitionsAreSmoothAndEndExactly) {
   }
   EXPECT_FALSE(controller.animating());
   EXPECT_LT(largestStep, 0.15f);  // no jump
-  EXPECT_NEAR(glm::distance(controller.camera().direction, engine::viewDirection(engine::StandardView::kTop)), 0.0f,
-              1e-5f);
+  EXPECT_NEAR(glm::distance(controller.camera().direction, engine::viewDirection(engine::StandardView::kTop)),
+              0.0f, 1e-5f);
   // Fit all after a zoom brings the whole box back in view.
   controller.zoom(10.0f, vp * 0.5f, vp);
   controller.fitAll(vp.x / vp.y, 0.0f);
   const engine::Bounds b = unitBox();
   for (int i = 0; i < 8; ++i) {
-    const glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
+    const glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                           (i & 4) ? b.max.z : b.min.z);
     const glm::vec2 px = project(controller.camera(), corner, vp);
     EXPECT_GE(px.x, 0.0f);
     EXPECT_LE(px.x, vp.x);

@@ -74,7 +74,8 @@ TEST(LiveTessellation, SlidersRetargetOneScheduleAndAnglesRestart) {
   EXPECT_GT(worst, 0.0);
   EXPECT_LE(worst, 1.0);
   EXPECT_EQ(scene.instanceCount(), 2 * instancesBefore);
-  const std::vector<std::vector<float>> perTriangle = brep::measureTriangles(live.tessellator(), live.targetLevel(), 2);
+  const std::vector<std::vector<float>> perTriangle =
+      brep::measureTriangles(live.tessellator(), live.targetLevel(), 2);
   std::size_t measured = 0;
   double largest = 0;
   for (std::uint32_t f = 0; f < perTriangle.size(); ++f) {
@@ -85,7 +86,8 @@ TEST(LiveTessellation, SlidersRetargetOneScheduleAndAnglesRestart) {
   EXPECT_EQ(measured, live.consumer().shownTriangles());
   EXPECT_NEAR(largest / live.levelTolerance(live.targetLevel()), worst, 1e-6);
   // The per-triangle maximum is the per-face measure's.
-  const std::vector<brep::FaceQuality> perFace = brep::measureFaces(live.tessellator(), live.targetLevel(), 2);
+  const std::vector<brep::FaceQuality> perFace =
+      brep::measureFaces(live.tessellator(), live.targetLevel(), 2);
   for (std::uint32_t f = 0; f < perFace.size(); ++f) {
     double faceMax = 0;
     for (float d : perTriangle[f]) faceMax = std::max(faceMax, static_cast<double>(d));

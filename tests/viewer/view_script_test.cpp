@@ -30,7 +30,8 @@ TEST(ViewScript, ParsesCommandsAndSkipsComments) {
 TEST(ViewScript, RejectsUnknownCommandsAndWrongArgumentCounts) {
   EXPECT_EQ(parseScript("spin 3\n", "s.txt").error, "s.txt:1: unknown command 'spin'");
   EXPECT_EQ(parseScript("fit\nview\n", "s.txt").error, "s.txt:2: 'view' takes 1 argument(s), not 0");
-  EXPECT_EQ(parseScript("wait seconds 3\n", "s.txt").error, "s.txt:1: 'wait' needs 'level K|target' or 'frames N'");
+  EXPECT_EQ(parseScript("wait seconds 3\n", "s.txt").error,
+            "s.txt:1: 'wait' needs 'level K|target' or 'frames N'");
   EXPECT_FALSE(loadScript("/nonexistent/script.txt").error.empty());
 }
 

@@ -44,9 +44,10 @@ std::string writeScript(const std::string& name, const std::string& text) {
 
 // Runs `cetview ARGS` in a fresh X server; returns the exit code, with stdout+stderr in `log`.
 int runViewer(const std::string& args, std::string& log) {
-  const std::string logPath = outputPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
-  const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) + " " + args +
-                              " > " + logPath + " 2>&1";
+  const std::string logPath =
+      outputPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
+  const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) + " " +
+                              args + " > " + logPath + " 2>&1";
   int code = -1;
   // xvfb-run -a can race another test's server for a display number: try again then.
   for (int attempt = 0; attempt < 3; ++attempt) {
@@ -54,7 +55,9 @@ int runViewer(const std::string& args, std::string& log) {
     std::ifstream in(logPath);
     log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    if (log.find("xvfb-run: error") == std::string::npos && log.find("Server is already active") == std::string::npos) break;
+    if (log.find("xvfb-run: error") == std::string::npos &&
+        log.find("Server is already active") == std::string::npos)
+      break;
   }
   return code;
 }
@@ -66,10 +69,14 @@ Pixel at(const engine::RgbaImage& image, std::uint32_t x, std::uint32_t y) {
   const std::uint8_t* p = &image.pixels[(std::size_t{y} * image.width + x) * 4];
   return {p[0], p[1], p[2]};
 }
-int difference(Pixel a, Pixel b) { return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b); }
+int difference(Pixel a, Pixel b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+}
 
 // ImGui's dark theme: panel bodies and the menu bar are near black over the light background.
-bool imguiDark(Pixel p) { return p.r < 70 && p.g < 70 && p.b < 80; }
+bool imguiDark(Pixel p) {
+  return p.r < 70 && p.g < 70 && p.b < 80;
+}
 
 // Fraction of the centre region (between the side panels) whose pixels differ from the background
 // gradient; the gradient is vertical, so column x = width - 3 (right of every panel) is the
@@ -107,8 +114,8 @@ TEST_F(ViewerWindowTest, DemoWithPanelsSliderMovesAndIsValidationClean) {
   const std::string shot = outputPath("demo.png");
   std::remove(shot.c_str());
   std::string log;
-  const int rc = runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
-                               " --screenshot " + shot,
+  const int rc = runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " +
+                               script + " --screenshot " + shot,
                            log);
   ASSERT_EQ(rc, 0) << log;
   auto image = engine::readPng(shot);
@@ -152,7 +159,7 @@ TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
   ASSERT_TRUE(image.ok()) << image.error().message;
   int coloured = 0;
   EXPECT_GT(modelCoverage(*image, &coloured), 0.15);
-  EXPECT_GT(coloured, 1000);  // heat-map colours, not the file's grey
+  EXPECT_GT(coloured, 1000);                      // heat-map colours, not the file's grey
   EXPECT_TRUE(imguiDark(at(*image, 250, 190)));   // Tessellation panel
   EXPECT_FALSE(imguiDark(at(*image, 150, 300)));  // where the Progress panel was
 }
@@ -162,10 +169,12 @@ TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
   if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
   const std::string script = writeScript("open.script",
                                          "wait level 0\n"
-                                         "open " + model + "\n"
-                                         "open /nonexistent/model.step\n"  // reported, the viewer goes on
-                                         "wait level target\n"
-                                         "quit\n");
+                                         "open " +
+                                             model +
+                                             "\n"
+                                             "open /nonexistent/model.step\n"  // reported, the viewer goes on
+                                             "wait level target\n"
+                                             "quit\n");
   std::string log;
   ASSERT_EQ(runViewer("--size 640x400 --frames 3000 --threads 2 --script " + script, log), 0) << log;
   EXPECT_NE(log.find("opened: demo"), std::string::npos) << log;
