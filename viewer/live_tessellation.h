@@ -51,7 +51,8 @@ class LiveTessellation {
   // Deviation heat map (DESIGN.md's promise made visible): each shown triangle is measured
   // against the exact surface (brep::measureTriangles) and coloured by deviation / tolerance of the
   // shown level, green (0) through yellow to red (1 and above), in kHeatBins colour bins. Drawn as
-  // extra engine parts that share the shown triangles' vertices; the model's own instances are
+  // extra engine parts (one face per model face and bin in use) that share the shown triangles'
+  // vertices; the model's own instances are
   // hidden meanwhile. Returns false (nothing changed) until the stream is idle with every face at
   // targetLevel(); then `worstRatio` gets the largest ratio.
   static constexpr std::uint32_t kHeatBins = 16;
@@ -101,7 +102,8 @@ class LiveTessellation {
   unsigned threads_ = 1;
   int target_ = 0;
   std::vector<bool> visible_;                      // per model instance
-  std::vector<engine::PartRange> heatParts_;       // per model part: one face per bin
+  std::vector<engine::PartRange> heatParts_;       // per model part: one face per (face, bin) in use
+  std::vector<std::uint32_t> heatCapacity_;        // per model part: faces of its heat part (0: none yet)
   std::vector<engine::InstanceId> heatInstances_;  // per model instance
   bool heatShown_ = false;
   void applyVisibility();
