@@ -153,6 +153,8 @@ class Viewer {
   brep::MeshParams initialParams_;
   CameraController camera_;
   engine::StandardView initialView_ = engine::StandardView::kIso;
+  engine::Camera openCamera_;  // the camera as the model opened
+  bool refitPending_ = false;  // fit the first complete level's triangles
   engine::ViewStyle style_;
   bool heatMap_ = false;
   int heatLevel_ = -1;  // the level the heat colours were measured at (-1: none shown)
@@ -222,6 +224,8 @@ std::string Viewer::openModel(const std::string& path) {
       engine::standardView(initialView_, live_->modelScene().bounds(), aspect, camera_.camera().projection),
       live_->modelScene().bounds());
   camera_.viewStandard(initialView_, aspect, 0.0f);
+  openCamera_ = camera_.camera();
+  refitPending_ = true;
   glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
   std::printf("opened: %s (%zu faces, %d levels down to %.6g)\n", live_->model().source().c_str(),
               live_->model().faces().size(), live_->lastLevel() + 1, live_->finestAbsolute());
@@ -767,7 +771,19 @@ int Viewer::run() {
       }
     }
     live_->poll(kPollBytesPerFrame);
-    camera_.setBounds(live_->modelScene().bounds());
+    // The triangles' box once they exist (a file's B-rep box can miss instances), else the model's.
+    const engine::Bounds sceneBounds = r_.scene().bounds();
+    camera_.setBounds(sceneBounds.empty() ? live_->modelScene().bounds() : sceneBounds);
+    if (refitPending_ && live_->consumer().completeLevel() >= 0 && !sceneBounds.empty()) {
+      // The first complete level: fit it, unless someone has moved the camera already.
+      refitPending_ = false;
+      const engine::Camera& c = camera_.camera();
+      if (!camera_.animating() && c.target == openCamera_.target && c.direction == openCamera_.direction &&
+          c.distance == openCamera_.distance && c.orthoHeight == openCamera_.orthoHeight) {
+        const glm::vec2 vp = viewport();
+        camera_.viewStandard(initialView_, vp.y > 0 ? vp.x / vp.y : 1.0f, 0.0f);
+      }
+    }
     camera_.update(static_cast<float>(dt));
     updateHeatMap();
 
