@@ -834,6 +834,19 @@ int Viewer::run() {
   }
   if (auto s = r_.waitIdle(); !s) return fail(1, s.error().message);
   if (exitCode_ != 0) return exitCode_;
+  {
+    // One line for scripts and tests: what the window showed at the end.
+    const auto& stats = live_->consumer().levelStats();
+    const int target = live_->targetLevel();
+    const unsigned long long levelTriangles =
+        target < static_cast<int>(stats.size()) ? stats[static_cast<std::size_t>(target)].triangles : 0;
+    std::printf(
+        "{\"frames\":%llu,\"target_level\":%d,\"complete_level\":%d,\"tolerance\":%.6g,"
+        "\"shown_triangles\":%llu,\"level_triangles\":%llu}\n",
+        static_cast<unsigned long long>(frame_), target, live_->consumer().completeLevel(),
+        live_->levelTolerance(target), static_cast<unsigned long long>(live_->consumer().shownTriangles()),
+        levelTriangles);
+  }
   if (cli_.validate && glue_.validationCount() > 0) {
     return fail(1,
                 "the validation layer reported " + std::to_string(glue_.validationCount()) + " problem(s)");

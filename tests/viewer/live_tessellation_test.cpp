@@ -125,3 +125,36 @@ TEST(LiveTessellation, HeatBinsAndColoursRunFromGreenToRed) {
 
 }  // namespace
 }  // namespace cetview::test
+
+namespace cetview::test {
+namespace {
+
+// After "finer", once the target level is complete, every face shows it.
+TEST(LiveTessellation, FinerTargetShowsTheWholeLevel) {
+  for (int round = 0; round < 10; ++round) {
+    brep::LoadResult loaded = brep::loadModel("demo");
+    ASSERT_TRUE(loaded) << loaded.error;
+    engine::Scene scene;
+    LiveOptions options;
+    options.threads = 2;
+    auto created = LiveTessellation::create(std::move(loaded.model), scene, options);
+    ASSERT_TRUE(created.live) << created.error;
+    LiveTessellation& live = *created.live;
+    // As the window does: move the slider as soon as the level shows, the stream maybe not idle yet.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (live.consumer().completeLevel() < live.targetLevel() &&
+           std::chrono::steady_clock::now() < deadline) {
+      live.poll(std::size_t{32} << 20);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    const int finer = live.setDeflection(live.levelTolerance(live.targetLevel() + 1));
+    ASSERT_TRUE(settle(live));
+    const auto& stats = live.consumer().levelStats();
+    ASSERT_GT(static_cast<int>(stats.size()), finer);
+    EXPECT_EQ(live.consumer().shownTriangles(), stats[static_cast<std::size_t>(finer)].triangles)
+        << "round " << round;
+  }
+}
+
+}  // namespace
+}  // namespace cetview::test

@@ -96,6 +96,20 @@ double modelCoverage(const engine::RgbaImage& image, int* coloured = nullptr) {
   return static_cast<double>(differ) / static_cast<double>(total);
 }
 
+// A number from the viewer's closing JSON line: {"frames":..,"target_level":..,...}.
+long long jsonNumber(const std::string& log, const std::string& key) {
+  const std::size_t at = log.rfind("\"" + key + "\":");
+  if (at == std::string::npos) return -1;
+  return std::atoll(log.c_str() + at + key.size() + 3);
+}
+
+// After `wait level target`, every face shows the target level: the triangles shown are the level's.
+void expectWholeLevelShown(const std::string& log) {
+  EXPECT_GE(jsonNumber(log, "complete_level"), jsonNumber(log, "target_level")) << log;
+  EXPECT_GT(jsonNumber(log, "level_triangles"), 0) << log;
+  EXPECT_EQ(jsonNumber(log, "shown_triangles"), jsonNumber(log, "level_triangles")) << log;
+}
+
 class ViewerWindowTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -118,6 +132,8 @@ TEST_F(ViewerWindowTest, DemoWithPanelsSliderMovesAndIsValidationClean) {
                                script + " --screenshot " + shot,
                            log);
   ASSERT_EQ(rc, 0) << log;
+  expectWholeLevelShown(log);
+  EXPECT_EQ(jsonNumber(log, "target_level"), 5) << log;  // 0.05% of the demo's diagonal
   auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   ASSERT_EQ(image->width, 960u);
@@ -155,6 +171,7 @@ TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
                                " --screenshot " + shot,
                            log);  // no `view`: the default subcommand
   ASSERT_EQ(rc, 0) << log;
+  expectWholeLevelShown(log);
   auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   int coloured = 0;
