@@ -119,8 +119,8 @@ TEST_P(CameraControllerTest, RayHitsTheBoxOnlyWhereItIs) {
 
 INSTANTIATE_TEST_SUITE_P(Projections, CameraControllerTest,
                          ::testing::Values(Projection::kPerspective, Projection::kOrthographic),
-                         [](const ::testing::TestParamInfo<Projection>& info) {
-                           return info.param == Projection::kPerspective ? "Perspective" : "Orthographic";
+                         [](const ::testing::TestParamInfo<Projection>& param) {
+                           return param.param == Projection::kPerspective ? "Perspective" : "Orthographic";
                          });
 
 TEST(CameraController, ProjectionSwitchKeepsTheFraming) {
