@@ -351,6 +351,19 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
       return vkError("vkAcquireNextImageKHR", r);
     }
   }
+  if (capture && present) {
+    if (!swapchain_.transferSrc) {
+      return makeError(ErrorCode::kUnsupported, "this window surface's images cannot be copied (no screenshot)");
+    }
+    // Frames in flight never read back (capture waits for its own frame), so the old buffer is free.
+    const VkDeviceSize bytes = VkDeviceSize{extent_.width} * extent_.height * 4;
+    if (readback_.size != bytes) {
+      destroyBuffer(device_, readback_);
+      auto readback = createBuffer(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::kReadback);
+      CETVIEW_TRY(readback);
+      readback_ = *readback;
+    }
+  }
 
   CETVIEW_VK(vkResetFences(device_.device, 1, &frame.fence));
   CETVIEW_VK(vkResetCommandPool(device_.device, frame.pool, 0));
@@ -374,7 +387,34 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
     updateDescriptors(frame);
     VkFramebuffer framebuffer = attachments_.framebuffers[present ? imageIndex : 0];
     recordRenderPass(frame, framebuffer, *camera, *style);
-    if (capture) {
+    if (capture && present) {
+      // The presented image: PRESENT_SRC -> TRANSFER_SRC, copy, and back for the presentation.
+      VkImage image = swapchain_.images[imageIndex];
+      auto toCopy = vkInit<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+      toCopy.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+      toCopy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+      toCopy.oldLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+      toCopy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+      toCopy.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      toCopy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      toCopy.image = image;
+      toCopy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                           0, nullptr, 0, nullptr, 1, &toCopy);
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageExtent = {extent_.width, extent_.height, 1};
+      vkCmdCopyImageToBuffer(frame.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
+      auto toPresent = toCopy;
+      toPresent.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+      toPresent.dstAccessMask = 0;
+      toPresent.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+      toPresent.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0,
+                           nullptr, 0, nullptr, 1, &toPresent);
+      memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    } else if (capture) {
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageExtent = {extent_.width, extent_.height, 1};
@@ -429,10 +469,12 @@ Result<FrameStatus> Renderer::drawFrame(const Camera& camera, const ViewStyle& s
 }
 
 Result<RgbaImage> Renderer::capture(const Camera& camera, const ViewStyle& style) {
-  if (!headless()) return makeError(ErrorCode::kInvalidArgument, "capture() needs a headless renderer");
   Frame& frame = frames_[frameIndex_ % frames_.size()];
   auto status = runFrame(&camera, &style, true);
   CETVIEW_TRY(status);
+  if (*status == FrameStatus::kSkipped) {
+    return makeError(ErrorCode::kUnsupported, "the window frame was skipped (minimised or out of date)");
+  }
   CETVIEW_VK(vkWaitForFences(device_.device, 1, &frame.fence, VK_TRUE, UINT64_MAX));
   CETVIEW_TRY(invalidateForHost(device_, readback_));
 

@@ -77,9 +77,21 @@ class Renderer {
   // fillModeNonSolid), kDeviceLost, kSurfaceLost, kOutOfMemory, kVulkan.
   Result<FrameStatus> drawFrame(const Camera& camera, const ViewStyle& style = {});
 
-  // Headless only: draws one frame and returns its pixels (waits for it). Call finishUploads()
-  // first for a picture of the whole scene. Errors: kInvalidArgument for a windowed renderer.
+  // Draws one frame and returns its pixels (waits for it); call finishUploads() first for a
+  // picture of the whole scene. In a window the frame is also presented, overlay included.
+  // Errors: kUnsupported (the surface's images cannot be copied from, or the frame was skipped:
+  // minimised or out of date; try again next frame), and drawFrame()'s.
   Result<RgbaImage> capture(const Camera& camera, const ViewStyle& style = {});
+
+  // Extra commands recorded inside each frame's render pass (its only subpass), after the model:
+  // the viewer's ImGui overlay. Called with the frame's command buffer; the pipelines it binds
+  // must be made for renderPass() and samples(). An empty function removes the overlay.
+  using OverlayFn = std::function<void(VkCommandBuffer)>;
+  void setOverlay(OverlayFn overlay) { overlay_ = std::move(overlay); }
+  // The render pass every frame uses (stable for the renderer's life unless the window's surface
+  // format changes, which recreates the pipelines).
+  VkRenderPass renderPass() const { return pipelines_.renderPass; }
+  std::uint32_t framesInFlight() const { return options_.framesInFlight; }
 
   // Submits upload-only frames (same budget each) until the Scene has nothing pending, then waits.
   Status finishUploads();
@@ -158,7 +170,8 @@ class Renderer {
 
   // Headless target.
   Image offscreen_;
-  Buffer readback_;
+  Buffer readback_;  // headless: made with the target; window: made by the first capture
+  OverlayFn overlay_;
 
   // Window target.
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;

@@ -17,6 +17,7 @@ struct Swapchain {
   VkExtent2D extent{0, 0};
   std::vector<VkImage> images;
   std::vector<VkImageView> views;
+  bool transferSrc = false;  // images can be copied from (Renderer::capture() of a window)
 };
 
 // B8G8R8A8_SRGB or R8G8B8A8_SRGB in the sRGB colour space when offered, else the first format.

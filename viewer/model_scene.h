@@ -29,12 +29,17 @@ class ModelScene : public stream::MeshSink {
   engine::Bounds bounds() const { return bounds_; }
   engine::FaceId engineFace(std::uint32_t face) const { return faceIds_[face]; }
   engine::InstanceId engineInstance(std::uint32_t instance) const { return instanceIds_[instance]; }
+  // The triangles face `face` shows now (indices into the Scene's vertex array), as last set.
+  const std::vector<std::uint32_t>& shownIndices(std::uint32_t face) const { return shown_[face]; }
+  // An instance's part -> world transform, as given to the Scene.
+  static glm::mat4 instanceTransform(const brep::InstanceInfo& instance);
 
  private:
   engine::Scene& scene_;
   std::vector<engine::FaceId> faceIds_;
   std::vector<engine::EdgeId> edgeIds_;
   std::vector<engine::InstanceId> instanceIds_;
+  std::vector<std::vector<std::uint32_t>> shown_;  // per model face
   engine::Bounds bounds_;
 };
 

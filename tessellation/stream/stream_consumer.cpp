@@ -115,8 +115,15 @@ void StreamConsumer::apply(const std::uint8_t* data, std::size_t size, MeshSink&
   std::memcpy(&h, data, sizeof h);
   const std::size_t need = sizeof h + std::size_t{h.vertexCount} * sizeof(StreamVertex) +
                            std::size_t{h.indexCount} * sizeof(std::uint32_t);
-  if (h.face >= faces_.size() || size < need || h.firstVertex > faces_[h.face].localCount) return;
+  if (h.face >= faces_.size() || size < need) return;
   Face& face = faces_[h.face];
+  if (h.firstVertex > face.localCount) {
+    // A face's levels can be published by different workers, so its level k+1 record may be read
+    // before its level k record still waiting in another ring: keep it until that one is applied
+    // (dropping it left the face stuck at level k, and every later level with it).
+    face.deferred.emplace_back(data, data + size);
+    return;
+  }
   // New vertices only: a level published again after a cancellation repeats some.
   const std::uint32_t skip = face.localCount - h.firstVertex;
   if (h.vertexCount > skip) {
@@ -142,6 +149,23 @@ void StreamConsumer::apply(const std::uint8_t* data, std::size_t size, MeshSink&
   }
   face.levels[h.level] = std::move(indices);
   show(h.face, sink);
+  // Deferred records this one makes applicable, lowest vertex offset first.
+  while (!face.deferred.empty()) {
+    std::size_t best = face.deferred.size();
+    std::uint32_t bestFirst = 0;
+    for (std::size_t i = 0; i < face.deferred.size(); ++i) {
+      FaceLevelHeader d;
+      std::memcpy(&d, face.deferred[i].data(), sizeof d);
+      if (d.firstVertex <= face.localCount && (best == face.deferred.size() || d.firstVertex < bestFirst)) {
+        best = i, bestFirst = d.firstVertex;
+      }
+    }
+    if (best == face.deferred.size()) break;
+    std::vector<std::uint8_t> record = std::move(face.deferred[best]);
+    face.deferred.erase(face.deferred.begin() + static_cast<std::ptrdiff_t>(best));
+    apply(record.data(), record.size(), sink);  // may apply further deferred records itself
+    break;
+  }
 }
 
 void StreamConsumer::show(std::uint32_t f, MeshSink& sink) {

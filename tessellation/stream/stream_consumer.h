@@ -64,6 +64,7 @@ class StreamConsumer {
     std::uint32_t localCount = 0;
     std::vector<std::vector<std::uint32_t>> levels;  // global indices per completed level
     int shown = -1;
+    std::vector<std::vector<std::uint8_t>> deferred;  // records read before an earlier level of this face
   };
   void apply(const std::uint8_t* data, std::size_t size, MeshSink& sink);
   void showEdges(MeshSink& sink);

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <string>
 #include <thread>
+#include <utility>
 
 // vulkan_xcb.h needs xcb.h first: separate blocks keep clang-format from reordering them.
 #include <xcb/xcb.h>
@@ -202,14 +203,58 @@ TEST_F(WindowTest, ResizeMinimiseAndOutOfDateSwapchains) {
   ASSERT_TRUE(r.waitIdle().ok());
 }
 
-TEST_F(WindowTest, CaptureIsForHeadlessRenderersOnly) {
+// The overlay hook records inside the frame's render pass after the model (the viewer's ImGui
+// panels), and capture() of a window reads back the presented image, overlay included.
+TEST_F(WindowTest, OverlayIsDrawnOverTheModelAndCaptured) {
   ASSERT_NE(surface_, VK_NULL_HANDLE);
   auto created = Renderer::createWindowed(device_, surface_, [this] { return framebuffer_; });
   ASSERT_TRUE(created.ok()) << created.error().message;
   renderer_ = std::move(*created);
-  auto image = renderer_->capture(Camera{});
-  ASSERT_FALSE(image.ok());
-  EXPECT_EQ(image.error().code, ErrorCode::kInvalidArgument);
+  Renderer& r = *renderer_;
+  EXPECT_NE(r.renderPass(), VK_NULL_HANDLE);
+  EXPECT_GE(r.framesInFlight(), 1u);
+  ASSERT_TRUE(addMesh(r.scene(), cube()).ok());
+  ASSERT_TRUE(r.finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, r.scene().bounds(), 320.0f / 240.0f);
+
+  int overlayCalls = 0;
+  r.setOverlay([&overlayCalls](VkCommandBuffer cmd) {
+    ++overlayCalls;
+    VkClearAttachment clear{};
+    clear.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    clear.colorAttachment = 0;
+    clear.clearValue.color = {{1.0f, 0.0f, 0.0f, 1.0f}};
+    VkClearRect rect{{{0, 0}, {40, 30}}, 0, 1};  // top-left corner, over the background
+    vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
+    rect.rect = {{140, 100}, {40, 40}};  // window centre, over the cube
+    vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
+  });
+  Result<RgbaImage> image = makeError(ErrorCode::kUnsupported, "not tried");
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    image = r.capture(camera);
+    if (image.ok() || image.error().code != ErrorCode::kUnsupported) break;
+  }
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  ASSERT_EQ(image->width, 320u);
+  ASSERT_EQ(image->height, 240u);
+  EXPECT_GE(overlayCalls, 1);
+  auto px = [&](std::uint32_t x, std::uint32_t y) { return &image->pixels[(std::size_t{y} * image->width + x) * 4]; };
+  for (auto [x, y] : {std::pair{10u, 10u}, std::pair{160u, 120u}}) {
+    const std::uint8_t* p = px(x, y);
+    EXPECT_GT(p[0], 240) << x << "," << y;
+    EXPECT_LT(p[1], 16) << x << "," << y;
+    EXPECT_LT(p[2], 16) << x << "," << y;
+  }
+  const std::uint8_t* bg = px(300, 10);  // the background gradient (bluish grey), no overlay
+  EXPECT_GT(bg[2], bg[0]);
+  EXPECT_GT(bg[1], 100);
+
+  r.setOverlay({});
+  auto plain = r.capture(camera);
+  for (int attempt = 0; attempt < 5 && !plain.ok(); ++attempt) plain = r.capture(camera);
+  ASSERT_TRUE(plain.ok()) << plain.error().message;
+  EXPECT_GT(plain->pixels[(10u * plain->width + 10u) * 4 + 1], 100);  // no red square any more
+  ASSERT_TRUE(r.waitIdle().ok());
 }
 
 }  // namespace
