@@ -110,15 +110,6 @@ class Renderer {
   std::uint32_t swapchainRecreations() const { return recreations_; }
   const Device& device() const { return device_; }
 
-  // Extra drawing after the scene, inside the render pass of every rendered frame: the viewer
-  // records its ImGui draw data here (the engine knows nothing of ImGui). The callback gets the
-  // frame's command buffer with the render pass begun, viewport and scissor set to the whole
-  // target; it may bind its own pipelines, made for renderPass() with samples() samples.
-  // renderPass() stays the same for the renderer's life unless the window surface changes pixel
-  // format (then swapchainRecreations() has grown too). An empty function removes the overlay.
-  using OverlayFn = std::function<void(VkCommandBuffer)>;
-  void setOverlay(OverlayFn overlay) { overlay_ = std::move(overlay); }
-  VkRenderPass renderPass() const { return pipelines_.renderPass; }
   // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.
   std::uint32_t swapchainImageCount() const { return static_cast<std::uint32_t>(swapchain_.images.size()); }
 
@@ -171,7 +162,6 @@ class Renderer {
   // Headless target.
   Image offscreen_;
   Buffer readback_;  // headless: made with the target; window: made by the first capture
-  OverlayFn overlay_;
 
   // Window target.
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
