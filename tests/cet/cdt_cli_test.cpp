@@ -1,6 +1,5 @@
 // `cetview cdt` as a user runs it: exit codes, one-line errors, output files, --json.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -8,27 +7,14 @@
 #include <memory>
 #include <string>
 
+#include "run_command.h"
+
 namespace {
 
-struct CliResult {
-  int exitCode;
-  std::string out;
-  std::string err;
-};
+using CliResult = cetview::test::CommandResult;
 
 CliResult run(const std::string& args) {
-  const std::string errPath = ::testing::TempDir() + "/cdt_cli_err.txt";
-  const std::string cmd = std::string(CETVIEW_EXE) + " " + args + " 2>" + errPath;
-  CliResult r{-1, {}, {}};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe)) r.out += buf.data();
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(errPath);
-  r.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
-  return r;
+  return cetview::test::runCommand(std::string(CETVIEW_EXE) + " " + args, ::testing::TempDir() + "/cdt_cli_err.txt");
 }
 
 std::string write(const std::string& name, const std::string& text) {

@@ -1,7 +1,6 @@
 // `cetview render --levels` on lavapipe, end to end: one complete frame per level, each sharper than
 // the last (successive images differ), the final one matching a golden image, validation-clean.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -12,25 +11,13 @@
 
 #include "engine/image.h"
 #include "image_compare.h"
+#include "run_command.h"
 
 namespace {
 
-struct CliResult {
-  int exitCode = -1;
-  std::string out;
-};
+using CliResult = cetview::test::CommandResult;
 
-CliResult run(const std::string& args) {
-  const std::string cmd = std::string(CETVIEW_EXE) + " " + args;
-  CliResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe)) r.out += buf.data();
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+CliResult run(const std::string& args) { return cetview::test::runCommand(std::string(CETVIEW_EXE) + " " + args); }
 
 struct LevelLine {
   int level;
