@@ -19,6 +19,9 @@ std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& n
 
 struct CheckOptions {
   bool selfIntersection = true;  // bucketed triangle-triangle test of every closed part
+  // Also between different faces (deeper than the deflection). Off for models whose B-rep itself
+  // has overlapping solids (several sample models do): the test is then within each face.
+  bool acrossFaces = true;
   bool everyLevel = true;        // check each level against its own tolerance, not only the final one
 };
 

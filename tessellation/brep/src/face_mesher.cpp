@@ -316,9 +316,15 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   }
   r = TriangleRecord{};
   r.a = v[0], r.b = v[1], r.c = v[2];
-  const bool collapsed = P[0].IsEqual(P[1], 0) || P[1].IsEqual(P[2], 0) || P[0].IsEqual(P[2], 0);
-  double longest = 0;
-  for (int i = 0; i < 3; ++i) longest = std::max(longest, P[i].Distance(P[(i + 1) % 3]));
+  const double c = settings_.coincident;
+  const bool collapsed = P[0].IsEqual(P[1], c) || P[1].IsEqual(P[2], c) || P[0].IsEqual(P[2], c);
+  double longest = 0, longestFree = 0;
+  r.longestFreeEdge = 3;
+  for (int i = 0; i < 3; ++i) {
+    const double len = P[(i + 1) % 3].Distance(P[(i + 2) % 3]);  // edge i, opposite corner i
+    longest = std::max(longest, len);
+    if (!m.isConstrained(t, i) && len > longestFree) longestFree = len, r.longestFreeEdge = static_cast<std::uint8_t>(i);
+  }
   r.longest = static_cast<float>(longest);
 
   // Chordal: samples of the flat triangle projected onto the surface. The corresponding-point
@@ -419,14 +425,19 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     if (n.Magnitude() == 0 || len == 0) return;
     c.n = n.Normalized();
     const std::size_t oa = base_ + a, ob = base_ + b;
-    const gp_Pnt under = eval_.point(0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]));
     const gp_Vec inward = c.n.Crossed(c.ab / len);
-    const gp_Vec bulge(c.a.XYZ() + 0.5 * c.ab.XYZ(), under.XYZ());
-    const double w = bulge.Dot(inward), h = std::abs(bulge.Dot(c.n));
+    // The bulge, sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
+    double w = 0, h = 0;
+    for (double f : {0.25, 0.5, 0.75}) {
+      const gp_Pnt under = eval_.point((1 - f) * mesh.uv[2 * oa] + f * mesh.uv[2 * ob], (1 - f) * mesh.uv[2 * oa + 1] + f * mesh.uv[2 * ob + 1]);
+      const gp_Vec bulge(c.a.XYZ() + f * c.ab.XYZ(), under.XYZ());
+      w = std::min(w, bulge.Dot(inward));
+      h = std::max(h, std::abs(bulge.Dot(c.n)));
+    }
     // Outward in the tangent plane: the point must clear the bulge. Along the normal (a chord of a
     // curved boundary sags below the surface): the point must be far enough that the facet on the
     // chord tilts by less than ~40 degrees.
-    c.clearance = (w < 0 ? -1.5 * w : 0.0) + 1.2 * h + 1e-3 * len;
+    c.clearance = -1.5 * w + 1.2 * h + 1e-3 * len;
     chords[count++] = c;
   };
   for (int i = 0; i < 3; ++i) {
@@ -494,7 +505,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       } else if (r->normalAngle > level.angleRad * (1 + 1e-6) && r->longest > minSize) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < foldCos) && r->longest > minSize) {
-        at = 0;  // flipped, or folded: the facet turns further from the surface than the corners' spread allows
+        // Flipped, or folded (the facet turns further from the surface than its corners' spread
+        // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
+        // thinner ones).
+        at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
       }
       if (at < 0) continue;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
@@ -557,13 +571,15 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   indices.reserve(cdt_->insideTriangleCount() * 3);
   const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
   auto same = [&](std::uint32_t a, std::uint32_t b) {
-    return mesh.positions[3 * a] == mesh.positions[3 * b] && mesh.positions[3 * a + 1] == mesh.positions[3 * b + 1] &&
-           mesh.positions[3 * a + 2] == mesh.positions[3 * b + 2];
+    const double* p = &mesh.positions[3 * a];
+    const double* q = &mesh.positions[3 * b];
+    const double c = settings_.coincident;
+    return std::abs(p[0] - q[0]) <= c && std::abs(p[1] - q[1]) <= c && std::abs(p[2] - q[2]) <= c;
   };
   for (cet::TriangleId t = 0; t < triangles; ++t) {
     if (m.isGhost(t) || m.isOutside(t)) continue;
     const std::uint32_t a = base_ + m.vertex(t, 0), b = base_ + m.vertex(t, 1), c = base_ + m.vertex(t, 2);
-    if (same(a, b) || same(b, c) || same(a, c)) continue;  // collapsed on a pole or a closed UV gap
+    if (same(a, b) || same(b, c) || same(a, c)) continue;  // collapsed on a pole, a singular row or a UV gap
     if (settings_.reversed) {
       indices.insert(indices.end(), {a, c, b});
     } else {

@@ -32,6 +32,9 @@ struct FaceMesherSettings {
   double finalChordal = 0;   // the fallback mesher's tolerance; UV gaps below a tenth of it close silently
   double finalAngle = 0;
   bool reversed = false;     // face orientation: normals and winding of the output flip
+  // Vertices closer than this are one point (poles, singular rows of a B-spline, bridged UV gaps):
+  // triangles with two of them have no area and are dropped from the output.
+  double coincident = 0;
 };
 
 class FaceMesher {

@@ -79,9 +79,18 @@ bool coplanarIntersect(const V3 p[3], const V3 q[3], double eps) {
   return inside(p[0], q) || inside(q[0], p);
 }
 
-bool trianglesIntersect(const V3 p[3], const V3 q[3], double eps) {
+// How deep the triangle with plane distances d reaches through the plane: the smaller of its
+// reaches on the two sides.
+double depthOf(const double d[3]) {
+  double above = 0, below = 0;
+  for (int i = 0; i < 3; ++i) above = std::max(above, d[i]), below = std::max(below, -d[i]);
+  return std::min(above, below);
+}
+
+bool trianglesIntersect(const V3 p[3], const V3 q[3], double eps, double minDepth) {
   double dp[3], dq[3];
   if (!planeDistances(q, p, eps, dp) || !planeDistances(p, q, eps, dq)) return false;
+  if (minDepth > 0 && std::min(depthOf(dp), depthOf(dq)) <= minDepth) return false;  // both must straddle
   if ((dp[0] > 0 && dp[1] > 0 && dp[2] > 0) || (dp[0] < 0 && dp[1] < 0 && dp[2] < 0)) return false;
   if ((dq[0] > 0 && dq[1] > 0 && dq[2] > 0) || (dq[0] < 0 && dq[1] < 0 && dq[2] < 0)) return false;
   if (dp[0] == 0 && dp[1] == 0 && dp[2] == 0) return coplanarIntersect(p, q, eps);
@@ -194,7 +203,8 @@ std::size_t countDegenerate(const TriangleSoup& soup) {
 }
 
 std::size_t countSelfIntersections(const TriangleSoup& soup, double weldTolerance, double tolerance,
-                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs, std::size_t maxPairs) {
+                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs, std::size_t maxPairs,
+                                   double otherFaceDepth) {
   const std::vector<std::uint32_t> rep = weldVertices(soup.positions, weldTolerance);
   const std::size_t n = soup.triangleCount();
   std::vector<std::array<V3, 3>> tri(n);
@@ -259,7 +269,8 @@ std::size_t countSelfIntersections(const TriangleSoup& soup, double weldToleranc
         if (shares) continue;
         const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | t;
         if (found.count(key)) continue;
-        if (trianglesIntersect(tri[s].data(), tri[t].data(), tolerance)) {
+        const bool sameFace = soup.faceOf.empty() || soup.faceOf[s] == soup.faceOf[t];
+        if (trianglesIntersect(tri[s].data(), tri[t].data(), tolerance, sameFace ? 0.0 : otherFaceDepth)) {
           found.insert(key);
           if (pairs && pairs->size() < maxPairs) pairs->emplace_back(s, t);
         }

@@ -45,13 +45,18 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   const double floor = 1e-9 * std::max({lu, lv, 1e-300});
   su = std::max(lu, floor);
   sv = std::max(lv, floor);
-  // Curved faces: weigh each direction by the square root of its curvature, so the Delaunay
-  // criterion judges shapes by how fast the surface turns rather than by length (a chord's sagitta
-  // grows with curvature times length squared). A cylinder's triangles then run along its straight
-  // direction, as they should; the anisotropy is capped at 10:1 in length.
+  // Weigh each direction by the square root of its curvature, so the Delaunay criterion judges
+  // shapes by how fast the surface turns rather than by length (a chord's sagitta grows with
+  // curvature times length squared). A cylinder's triangles then run along its straight direction,
+  // as they should; the anisotropy is capped at 10:1 in length.
+  // Only where the curvature is directional by construction (cylinders, cones, linear extrusions:
+  // straight in one direction); averaged curvatures of free-form faces say little about any one
+  // place, and a wrong stretch makes slivers that fold on a wavy surface.
+  const GeomAbs_SurfaceType type = surface_.GetType();
+  const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion;
   const double kmax = std::max(ku, kv);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
-  if (kmax * size > 1e-3) {
+  if (directional && kmax * size > 1e-3) {
     const double kfloor = 1e-2 * kmax;
     su *= std::sqrt(std::max(ku, kfloor) / kmax);
     sv *= std::sqrt(std::max(kv, kfloor) / kmax);

@@ -93,6 +93,7 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
       FaceMesherSettings settings;
       settings.finalChordal = t.chordal;
       settings.finalAngle = t.angle;
+      settings.coincident = 1e-10 * t.model.bounds().diagonal();
       settings.reversed = t.model.faces()[face].reversed;
       s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings);
     }
