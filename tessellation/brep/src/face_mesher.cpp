@@ -397,78 +397,113 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   }
 }
 
-bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const {
+// ---------------------------------------------------------------------------------------------
+// Boundary chords and their clearance. The surface under a chord's UV segment bulges away from the
+// 3D chord, by w within the tangent plane and by h along the normal (a chord of a curved boundary
+// sags below the surface); a point closer to the chord than that makes a flipped or folded triangle
+// on it, and no later point can repair it (Delaunay keeps the closest apex on a constrained edge).
+void FaceMesher::buildChords(const FaceMesh& mesh) {
+  chords_.clear();
+  chordGrid_.clear();
   const cet::CetMesh& m = cdt_->mesh();
-  auto vertexPos = [&](cet::VertexId id) {
+  auto pos = [&](cet::VertexId id) {
     const std::size_t o = base_ + id;
     return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
   };
-  // A boundary chord A -> B (domain on its left) and how far inside it a new point must lie: the
-  // surface under the chord's UV segment bulges away from the 3D chord, by w within the tangent plane
-  // and by h along the normal; a point closer than that makes a flipped or folded triangle.
-  struct Chord {
-    gp_Pnt a;
-    gp_Vec ab, n;
-    double clearance;
-  };
-  Chord chords[12];
-  int count = 0, own = -1;
-  auto addChord = [&](cet::TriangleId s, int i) {
-    const cet::VertexId a = m.vertex(s, (i + 1) % 3), b = m.vertex(s, (i + 2) % 3);
-    Chord c;
-    c.a = vertexPos(a);
-    c.ab = gp_Vec(c.a, vertexPos(b));
-    gp_Vec n(0, 0, 0);
-    if (!singular_[a]) n += gp_Vec(normal_[a]);
-    if (!singular_[b]) n += gp_Vec(normal_[b]);
-    const double len = c.ab.Magnitude();
-    if (n.Magnitude() == 0 || len == 0) return;
-    c.n = n.Normalized();
-    const std::size_t oa = base_ + a, ob = base_ + b;
-    const gp_Vec inward = c.n.Crossed(c.ab / len);
-    // The bulge, sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
-    double w = 0, h = 0;
-    for (double f : {0.25, 0.5, 0.75}) {
-      const gp_Pnt under = eval_.point((1 - f) * mesh.uv[2 * oa] + f * mesh.uv[2 * ob], (1 - f) * mesh.uv[2 * oa + 1] + f * mesh.uv[2 * ob + 1]);
-      const gp_Vec bulge(c.a.XYZ() + f * c.ab.XYZ(), under.XYZ());
-      w = std::min(w, bulge.Dot(inward));
-      h = std::max(h, std::abs(bulge.Dot(c.n)));
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, lengthSum = 0;
+  const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
+  for (cet::TriangleId t = 0; t < triangles; ++t) {
+    if (m.isGhost(t) || m.isOutside(t)) continue;
+    for (int i = 0; i < 3; ++i) {
+      if (!m.isConstrained(t, i)) continue;
+      const cet::VertexId a = m.vertex(t, (i + 1) % 3), b = m.vertex(t, (i + 2) % 3);  // domain on the left
+      Chord c;
+      c.a = pos(a);
+      c.ab = gp_Vec(c.a, pos(b));
+      const double len = c.ab.Magnitude();
+      gp_Vec n(0, 0, 0);
+      if (!singular_[a]) n += gp_Vec(normal_[a]);
+      if (!singular_[b]) n += gp_Vec(normal_[b]);
+      if (n.Magnitude() == 0 || len == 0) continue;
+      c.n = n.Normalized();
+      c.pa = cdt_->point(a), c.pb = cdt_->point(b);
+      const std::size_t oa = base_ + a, ob = base_ + b;
+      const gp_Vec inward = c.n.Crossed(c.ab / len);
+      // Sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
+      double w = 0, h = 0;
+      for (double f : {0.25, 0.5, 0.75}) {
+        const gp_Pnt under = eval_.point((1 - f) * mesh.uv[2 * oa] + f * mesh.uv[2 * ob],
+                                         (1 - f) * mesh.uv[2 * oa + 1] + f * mesh.uv[2 * ob + 1]);
+        const gp_Vec bulge(c.a.XYZ() + f * c.ab.XYZ(), under.XYZ());
+        w = std::min(w, bulge.Dot(inward));
+        h = std::max(h, std::abs(bulge.Dot(c.n)));
+      }
+      // Outward in the tangent plane: clear the bulge. Along the normal: far enough that the facet
+      // on the chord tilts by less than ~40 degrees.
+      c.clearance = -1.5 * w + 1.2 * h + 1e-3 * len;
+      // The zone the clearance guards, in scaled UV (scaled lengths approximate 3D ones; x2 margin).
+      const double reach = 2.0 * c.clearance;
+      c.x0 = std::min(c.pa.x, c.pb.x) - reach, c.x1 = std::max(c.pa.x, c.pb.x) + reach;
+      c.y0 = std::min(c.pa.y, c.pb.y) - reach, c.y1 = std::max(c.pa.y, c.pb.y) + reach;
+      x0 = std::min(x0, c.x0), y0 = std::min(y0, c.y0), x1 = std::max(x1, c.x1), y1 = std::max(y1, c.y1);
+      lengthSum += std::hypot(c.pb.x - c.pa.x, c.pb.y - c.pa.y);
+      chords_.push_back(c);
     }
-    // Outward in the tangent plane: the point must clear the bulge. Along the normal (a chord of a
-    // curved boundary sags below the surface): the point must be far enough that the facet on the
-    // chord tilts by less than ~40 degrees.
-    c.clearance = -1.5 * w + 1.2 * h + 1e-3 * len;
-    chords[count++] = c;
-  };
-  for (int i = 0; i < 3; ++i) {
-    if (m.isConstrained(t, i)) {
-      own = i;
-      addChord(t, i);
-    }
-    const cet::TriangleId n = m.neighbor(t, i);
-    if (n == cet::kNoTriangle || m.isGhost(n) || m.isOutside(n)) continue;
-    for (int j = 0; j < 3; ++j)
-      if (m.isConstrained(n, j)) addChord(n, j);
   }
-  if (count == 0) return true;
-  auto ok = [&](double uu, double vv) {
-    const gp_Pnt x = eval_.point(uu, vv);
-    for (int c = 0; c < count; ++c) {
-      const Chord& ch = chords[c];
-      if (ch.ab.Crossed(gp_Vec(ch.a, x)).Dot(ch.n) < ch.clearance * ch.ab.Magnitude()) return false;
-    }
-    return true;
-  };
-  if (ok(u, v)) return true;
-  if (own < 0) return false;
-  // Slide from the chord's midpoint towards the opposite corner.
-  const std::size_t oa = base_ + m.vertex(t, (own + 1) % 3), ob = base_ + m.vertex(t, (own + 2) % 3), oc = base_ + m.vertex(t, own);
-  const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
-  for (double f : {0.5, 0.7}) {
-    const double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
-    if (ok(uu, vv)) {
-      u = uu, v = vv;
-      return true;
+  if (chords_.empty()) return;
+  // A uniform grid of about one chord length per cell, at most 256 x 256.
+  const double cell = std::max(lengthSum / static_cast<double>(chords_.size()), 1e-300);
+  gridX0_ = x0, gridY0_ = y0;
+  gridNx_ = static_cast<int>(std::clamp((x1 - x0) / cell + 1, 1.0, 256.0));
+  gridNy_ = static_cast<int>(std::clamp((y1 - y0) / cell + 1, 1.0, 256.0));
+  gridCellX_ = std::max((x1 - x0) / gridNx_, 1e-300), gridCellY_ = std::max((y1 - y0) / gridNy_, 1e-300);
+  chordGrid_.assign(static_cast<std::size_t>(gridNx_ * gridNy_), {});
+  for (std::uint32_t k = 0; k < chords_.size(); ++k) {
+    const Chord& c = chords_[k];
+    const int i0 = std::clamp(static_cast<int>((c.x0 - gridX0_) / gridCellX_), 0, gridNx_ - 1);
+    const int i1 = std::clamp(static_cast<int>((c.x1 - gridX0_) / gridCellX_), 0, gridNx_ - 1);
+    const int j0 = std::clamp(static_cast<int>((c.y0 - gridY0_) / gridCellY_), 0, gridNy_ - 1);
+    const int j1 = std::clamp(static_cast<int>((c.y1 - gridY0_) / gridCellY_), 0, gridNy_ - 1);
+    for (int i = i0; i <= i1; ++i)
+      for (int j = j0; j <= j1; ++j) chordGrid_[static_cast<std::size_t>(j * gridNx_ + i)].push_back(k);
+  }
+}
+
+bool FaceMesher::clearOfChords(double u, double v) const {
+  if (chords_.empty()) return true;
+  const cet::Point2 q = scaled(u, v);
+  const int i = static_cast<int>((q.x - gridX0_) / gridCellX_), j = static_cast<int>((q.y - gridY0_) / gridCellY_);
+  if (i < 0 || j < 0 || i >= gridNx_ || j >= gridNy_) return true;
+  gp_Pnt x;
+  bool evaluated = false;
+  for (std::uint32_t k : chordGrid_[static_cast<std::size_t>(j * gridNx_ + i)]) {
+    const Chord& c = chords_[k];
+    if (q.x < c.x0 || q.x > c.x1 || q.y < c.y0 || q.y > c.y1) continue;
+    // Only points beside the chord (projecting within it, with a small overhang) are at risk.
+    const double ex = c.pb.x - c.pa.x, ey = c.pb.y - c.pa.y, e2 = ex * ex + ey * ey;
+    const double s = e2 > 0 ? ((q.x - c.pa.x) * ex + (q.y - c.pa.y) * ey) / e2 : 0.5;
+    if (s < -0.1 || s > 1.1) continue;
+    if (!evaluated) x = eval_.point(u, v), evaluated = true;
+    if (c.ab.Crossed(gp_Vec(c.a, x)).Dot(c.n) < c.clearance * c.ab.Magnitude()) return false;
+  }
+  return true;
+}
+
+bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const {
+  if (clearOfChords(u, v)) return true;
+  const cet::CetMesh& m = cdt_->mesh();
+  // Slide from the midpoint of one of t's own boundary chords towards the opposite corner.
+  for (int own = 0; own < 3; ++own) {
+    if (!m.isConstrained(t, own)) continue;
+    const std::size_t oa = base_ + m.vertex(t, (own + 1) % 3), ob = base_ + m.vertex(t, (own + 2) % 3);
+    const std::size_t oc = base_ + m.vertex(t, own);
+    const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
+    for (double f : {0.5, 0.7}) {
+      const double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
+      if (clearOfChords(uu, vv)) {
+        u = uu, v = vv;
+        return true;
+      }
     }
   }
   return false;
@@ -477,9 +512,12 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
-  const double foldCos = std::cos(std::min(1.5 * level.angleRad, 80.0 * M_PI / 180.0));
+  // A facet more than 70 degrees off its corners' normals is nearly edge-on: a flip waiting to happen.
+  // (Long thin triangles on a curved surface tilt less; splitting them would only make more.)
+  const double foldCos = std::cos(70.0 * M_PI / 180.0);
   std::vector<gp_Pnt2d> uvs;
   if (kDebugRefine) fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
+  buildChords(mesh);  // the boundary is fixed while the interior refines
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
     const int stamp = ++passStamp_;

@@ -73,6 +73,21 @@ class FaceMesher {
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
   // towards the opposite corner when needed; false when no safe point was found.
   bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const;
+  void buildChords(const FaceMesh& mesh);
+  bool clearOfChords(double u, double v) const;
+
+  // A boundary chord (a constrained edge, domain on its left) and the clearance points must keep.
+  struct Chord {
+    gp_Pnt a;
+    gp_Vec ab, n;
+    cet::Point2 pa, pb;  // scaled UV
+    double clearance = 0;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // guarded zone in scaled UV
+  };
+  std::vector<Chord> chords_;
+  std::vector<std::vector<std::uint32_t>> chordGrid_;  // chords by cell of a uniform scaled-UV grid
+  double gridX0_ = 0, gridY0_ = 0, gridCellX_ = 1, gridCellY_ = 1;
+  int gridNx_ = 0, gridNy_ = 0;
 
   FaceTopology topology_;
   FaceMesherSettings settings_;
