@@ -1,6 +1,6 @@
 // Edge discretisation by recursive subdivision with the two criteria of Laug & Borouchaki (2016,
 // "Discrete CAD model for visualization and meshing", section 2.1): proximity (chordal distance of
-// the curve to each segment, sampled at 1/4, 1/2, 3/4) and regularity (turn angle between the
+// the curve to each segment, sampled at every eighth) and regularity (turn angle between the
 // tangents at a segment's ends, and between each tangent and the chord), plus the turn of the surface
 // normals of each face along the segment. Level k subdivides the
 // segments of level k-1 that fail the tolerances of level k, so levels are nested.
@@ -244,7 +244,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         if (s.depth < kMaxDepth && s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb))) {
           const double chord = s.pa.Distance(s.pb);
           if (!info.straight) {
-            for (double f : {0.5, 0.25, 0.75}) {
+            for (double f : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875}) {
               if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > tol.chordal) {
                 split = true;
                 break;

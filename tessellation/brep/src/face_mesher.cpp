@@ -42,8 +42,9 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings)
     : topology_(std::move(topology)), settings_(settings), eval_(topology_.face) {
   const GeomAbs_SurfaceType type = eval_.adaptor().GetType();
-  freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere &&
-              type != GeomAbs_Torus;
+  // Ruled surfaces (planes, cylinders, cones) deviate from a triangle as a quadratic whose maximum
+  // the centroid and edge midpoints catch; doubly curved ones can peak elsewhere in big triangles.
+  freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone;
   for (const std::string& r : topology_.repairs) repairs_.push_back(r);
   repaired_ = !repairs_.empty();
 }
@@ -565,7 +566,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         const std::size_t o = base_ + m.vertex(t, i);
         u += b[i] * mesh.uv[2 * o], v += b[i] * mesh.uv[2 * o + 1];
       }
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh)) {
+      // The chordal promise outranks the clearance (which only guards against folds): a triangle
+      // too far from the surface is split at its worst sample regardless.
+      const bool tooFar = r->deviation > chordal;
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh) && !tooFar) {
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;
         cache_.insert(stuck);

@@ -101,7 +101,7 @@ class FaceMesher {
   bool repaired_ = false;
   std::vector<std::string> repairs_;
   bool fallback_ = false;
-  bool freeform_ = false;  // B-spline, Bezier, offset, swept...: sampled more densely
+  bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely
   FaceStatus fallbackStatus_ = FaceStatus::kFallback;
   int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
   // Scratch.

@@ -98,6 +98,20 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
 }
 
 double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start) const {
+  bool clamped = false;
+  double d = projectFrom(m, u, v, maxIter, start, clamped);
+  // Stopped against a parameter bound of a surface periodic in the other direction (a sphere's
+  // pole): the foot may lie across the pole, half a period round.
+  if (clamped && (uPeriodic_ || vPeriodic_)) {
+    double u2 = uPeriodic_ ? u + 0.5 * surface_.UPeriod() : u, v2 = vPeriodic_ ? v + 0.5 * surface_.VPeriod() : v;
+    bool again = false;
+    const double d2 = projectFrom(m, u2, v2, maxIter, nullptr, again);
+    if (d2 < d) d = d2, u = u2, v = v2;
+  }
+  return d;
+}
+
+double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped) const {
   gp_Pnt s;
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
@@ -118,8 +132,8 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
     // Stop when the step moves the foot point by a negligible fraction of the residual.
     const double move = (stepU * du + stepV * dv).Magnitude();
     u += stepU, v += stepV;
-    if (!uPeriodic_) u = std::clamp(u, su0_, su1_);
-    if (!vPeriodic_) v = std::clamp(v, sv0_, sv1_);
+    if (!uPeriodic_ && (u < su0_ || u > su1_)) u = std::clamp(u, su0_, su1_), clamped = true;
+    if (!vPeriodic_ && (v < sv0_ || v > sv1_)) v = std::clamp(v, sv0_, sv1_), clamped = true;
     if (move < 1e-3 * d) {
       const gp_Pnt s2 = surface_.Value(u, v);
       const double d2 = s2.Distance(m);

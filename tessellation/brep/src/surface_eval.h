@@ -37,6 +37,8 @@ class SurfaceEval {
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
  private:
+  double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped) const;
+
   BRepAdaptor_Surface surface_;
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
