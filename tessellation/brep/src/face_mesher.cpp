@@ -338,7 +338,8 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     double u = b0 * U[0] + b1 * U[1] + b2 * U[2], w = b0 * V[0] + b1 * V[1] + b2 * V[2];
     const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
     double corresponding = 0;
-    const double d = eval_.project(M, u, w, collapsed ? 0 : 3, &corresponding);
+    const double d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding);
+    if (collapsed) corresponding = d;
     if (d > worst) worst = d, r.worstSample = id;
     if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
   };

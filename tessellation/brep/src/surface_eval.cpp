@@ -111,7 +111,13 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
   return d;
 }
 
-double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped) const {
+double SurfaceEval::projectOnce(const gp_Pnt& m, double u, double v, double* start) const {
+  bool clamped = false;
+  return projectFrom(m, u, v, 3, start, clamped, 0.1);
+}
+
+double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
+                                double settle) const {
   gp_Pnt s;
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
@@ -134,7 +140,7 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
     u += stepU, v += stepV;
     if (!uPeriodic_ && (u < su0_ || u > su1_)) u = std::clamp(u, su0_, su1_), clamped = true;
     if (!vPeriodic_ && (v < sv0_ || v > sv1_)) v = std::clamp(v, sv0_, sv1_), clamped = true;
-    if (move < 1e-3 * d) {
+    if (move < settle * d) {
       const gp_Pnt s2 = surface_.Value(u, v);
       const double d2 = s2.Distance(m);
       if (d2 < best) best = d2, bu = u, bv = v;
