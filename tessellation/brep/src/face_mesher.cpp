@@ -491,9 +491,30 @@ bool FaceMesher::clearOfChords(double u, double v) const {
   return true;
 }
 
-bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const {
+bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const {
   if (clearOfChords(u, v)) return true;
   const cet::CetMesh& m = cdt_->mesh();
+  if (anyPoint) {
+    // A flipped triangle: any of its centroid and free-edge midpoints that keeps the clearance.
+    double cu[3], cv[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t o = base_ + m.vertex(t, i);
+      cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
+    }
+    double tu[4] = {(cu[0] + cu[1] + cu[2]) / 3, 0, 0, 0}, tv[4] = {(cv[0] + cv[1] + cv[2]) / 3, 0, 0, 0};
+    int n = 1;
+    for (int i = 0; i < 3; ++i) {
+      if (m.isConstrained(t, i)) continue;
+      tu[n] = 0.5 * (cu[(i + 1) % 3] + cu[(i + 2) % 3]), tv[n] = 0.5 * (cv[(i + 1) % 3] + cv[(i + 2) % 3]);
+      ++n;
+    }
+    for (int i = 0; i < n; ++i) {
+      if (clearOfChords(tu[i], tv[i])) {
+        u = tu[i], v = tv[i];
+        return true;
+      }
+    }
+  }
   // Slide from the midpoint of one of t's own boundary chords towards the opposite corner.
   for (int own = 0; own < 3; ++own) {
     if (!m.isConstrained(t, own)) continue;
@@ -570,7 +591,12 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // The chordal promise outranks the clearance (which only guards against folds): a triangle
       // too far from the surface is split at its worst sample regardless.
       const bool tooFar = r->deviation > chordal;
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh) && !tooFar) {
+      const bool flipped = (r->flags & TriangleRecord::kFlipped) || r->facetCos < 0;
+      // So does a flipped triangle larger than the tolerance (small faces at coarse levels, where a
+      // chord's clearance can cover the whole face): the overrides stop at that size, so they
+      // cannot cascade towards a boundary.
+      const bool override = tooFar || (flipped && r->longest > level.chordal);
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) {
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;
         cache_.insert(stuck);

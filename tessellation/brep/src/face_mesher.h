@@ -72,7 +72,7 @@ class FaceMesher {
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
   // towards the opposite corner when needed; false when no safe point was found.
-  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const;
+  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const;
   void buildChords(const FaceMesh& mesh);
   bool clearOfChords(double u, double v) const;
 

@@ -51,7 +51,8 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   // as they should; the anisotropy is capped at 10:1 in length.
   // Only where the curvature is directional by construction (cylinders, cones, linear extrusions:
   // straight in one direction); averaged curvatures of free-form faces say little about any one
-  // place, and a wrong stretch makes slivers that fold on a wavy surface.
+  // place, and a wrong stretch makes slivers that fold on a wavy surface. (Tori would gain too, but
+  // the coarser shared edges it gives them leave B-spline neighbours with flipped triangles.)
   const GeomAbs_SurfaceType type = surface_.GetType();
   const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion;
   const double kmax = std::max(ku, kv);
