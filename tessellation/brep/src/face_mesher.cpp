@@ -3,11 +3,16 @@
 // Sources: Yang & Choi (2010) for the CET arrays and the sequential constrained Delaunay insertion;
 // Eryar, "Delaunay surface visualization", for faces as constrained triangulations of their trimming
 // loops in UV with holes removed by orientation; Laug & Borouchaki (2016) for the proximity and
-// regularity criteria, applied here to triangles: a triangle is split where the exact surface
-// deviates from it by more than the level's chordal tolerance (sampled at the centroid and the
-// midpoints of unconstrained edges, each sample projected onto the surface), where the surface
-// normals at its corners differ by more than the angular tolerance, or where it faces against the
-// surface normals.
+// regularity criteria, applied here to triangles. A triangle is split
+//  - where the exact surface deviates from it by more than the level's chordal tolerance: samples
+//    of the flat triangle (centroid and free-edge midpoints; a barycentric grid on doubly curved
+//    surfaces) projected onto the surface; the corresponding-point distance |S(uv) - M| guards
+//    coverage (a triangle whose UV region maps far from it, across a seam or a pole, is split too);
+//  - where the surface normals at its corners differ by more than the angular tolerance;
+//  - where it is flipped or nearly edge-on against its corners' normals (split on its longest edge).
+// Points go in batches, one per neighbourhood per pass (an independent set), and never closer to a
+// boundary chord than the surface bulges under it (see buildChords): Delaunay keeps the closest apex
+// on a constrained edge, so a point there would leave a flipped triangle for good.
 #include "face_mesher.h"
 
 #include <algorithm>
@@ -539,7 +544,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
   // (Long thin triangles on a curved surface tilt less; splitting them would only make more.)
   const double foldCos = std::cos(70.0 * M_PI / 180.0);
   std::vector<gp_Pnt2d> uvs;
-  if (kDebugRefine) fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
+  if (kDebugRefine) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
@@ -578,9 +583,6 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       if (touched_[m.vertex(t, 0)] == stamp || touched_[m.vertex(t, 1)] == stamp || touched_[m.vertex(t, 2)] == stamp) {
         continue;
       }
-      if (kDebugRefine) { fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
-        for (int i = 0; i < 3; ++i) { auto o = base_ + m.vertex(t, i); fprintf(stderr, " [%u %.5f %.5f n %.3f %.3f %.3f s%d]", m.vertex(t,i), mesh.uv[2*o], mesh.uv[2*o+1], normal_[m.vertex(t,i)].X(), normal_[m.vertex(t,i)].Y(), normal_[m.vertex(t,i)].Z(), singular_[m.vertex(t,i)]); }
-        fprintf(stderr, "\n"); }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
       double u = 0, v = 0;
@@ -602,7 +604,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         cache_.insert(stuck);
         continue;
       }
-      if (kDebugRefine) fprintf(stderr, "  -> split at %.6f %.6f\n", u, v);
+      if (kDebugRefine) {
+        std::fprintf(stderr, "pass %d: triangle %u (deviation %g, angle %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
+                     pass, t, r->deviation, r->normalAngle, r->longest, r->flags, u, v);
+      }
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
       points_.push_back(scaled(u, v));
@@ -613,10 +618,6 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     outcomes_.assign(points_.size(), cet::InsertOutcome::kOutside);
     cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data());
     const auto countAfter = static_cast<cet::VertexId>(cdt_->vertexCount());
-    if (kDebugRefine) {
-      for (std::size_t i = 0; i < ids_.size(); ++i)
-        fprintf(stderr, "  outcome %d for %.6f %.6f\n", static_cast<int>(outcomes_[i]), uvs[i].X(), uvs[i].Y());
-    }
     if (countAfter == countBefore) return true;  // every request merged or rejected: nothing left to gain
     std::vector<std::uint32_t> inputOf(countAfter - countBefore, UINT32_MAX);
     for (std::size_t i = 0; i < ids_.size(); ++i)
@@ -674,8 +675,30 @@ FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceR
   return fallbackStatus_;
 }
 
+// A coarse level whose boundary polygon crosses itself in UV (coarse chords of close loops can cross
+// where finer ones do not): that level shows the fallback mesh, and the next level starts afresh.
+FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report) {
+  cdt_.reset();
+  cache_.clear();
+  if (deferredIndices_.empty()) {
+    std::string failure;
+    if (!meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle, mesh,
+                              deferredIndices_, failure)) {
+      return useFallback(why + "; fallback failed too: " + failure, mesh, report);
+    }
+  }
+  repairs_.push_back("level " + std::to_string(k) + " shows the fallback mesh: " + why);
+  repaired_ = true;
+  mesh.levels.push_back(deferredIndices_);
+  mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
+  report.status = FaceStatus::kRepaired;
+  report.reason.clear();
+  for (const std::string& r : repairs_) report.reason += (report.reason.empty() ? "" : "; ") + r;
+  return report.status;
+}
+
 FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
-                               const std::atomic<bool>* cancel) {
+                               const std::atomic<bool>* cancel, bool finalLevel) {
   if (cancel && cancel->load(std::memory_order_relaxed)) return FaceStatus::kCancelled;
   if (fallback_) {
     // The fallback mesh is at the final tolerance: within every level's.
@@ -699,6 +722,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
         ok = buildDomain(k, edges, mesh, problem);
       }
     }
+    if (!ok && !finalLevel) return deferLevel(k, problem, mesh, report);
     if (!ok) return useFallback(problem, mesh, report);
     if (!refine(level, mesh, cancel)) return FaceStatus::kCancelled;
   } catch (const Standard_Failure& e) {

@@ -43,8 +43,9 @@ class FaceMesher {
 
   // Advances to level k (the previous level is k-1, or none). Appends the new vertices to `mesh` and
   // pushes level k's index array. Returns kCancelled (nothing pushed) when cancel is raised.
+  // A failure to build the domain on a coarse level (not `finalLevel`) defers CET to the next level.
   FaceStatus advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
-                     const std::atomic<bool>* cancel);
+                     const std::atomic<bool>* cancel, bool finalLevel);
 
  private:
   struct Occurrence {
@@ -61,6 +62,8 @@ class FaceMesher {
   // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
   std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
   FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report);
+  FaceStatus deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report);
+  std::vector<std::uint32_t> deferredIndices_;  // the fallback mesh shown by deferred coarse levels
 
   // Output bookkeeping: vertices the triangulator created since the last sync get their data.
   // Appends the output data of the next triangulator vertex: at (u, v), position p (an edge point)
