@@ -130,14 +130,18 @@ TriangleSoup partSoup(const Tessellator& t, std::uint32_t part, int level) {
 std::vector<std::uint32_t> weldVertices(const std::vector<double>& positions, double tolerance) {
   const std::size_t n = positions.size() / 3;
   std::vector<std::uint32_t> rep(n);
-  const double cell = std::max(tolerance, 1e-300);
+  // Cells no finer than 1e-15 of the coordinates, so cell indices fit in 64 bits.
+  double maxAbs = 0;
+  for (double c : positions) maxAbs = std::max(maxAbs, std::abs(c));
+  const double cell = std::max({tolerance, 1e-15 * maxAbs, 1e-300});
   struct Key {
     std::int64_t x, y, z;
     bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
   };
   struct Hash {
     std::size_t operator()(const Key& k) const {
-      return static_cast<std::size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+      return static_cast<std::size_t>(static_cast<std::uint64_t>(k.x) * 73856093u ^ static_cast<std::uint64_t>(k.y) * 19349663u ^
+                                      static_cast<std::uint64_t>(k.z) * 83492791u);
     }
   };
   std::unordered_map<Key, std::vector<std::uint32_t>, Hash> grid;
@@ -269,7 +273,7 @@ std::size_t countSelfIntersections(const TriangleSoup& soup, double weldToleranc
         if (shares) continue;
         const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | t;
         if (found.count(key)) continue;
-        const bool sameFace = soup.faceOf.empty() || soup.faceOf[s] == soup.faceOf[t];
+        const bool sameFace = soup.faceOf.size() != n || soup.faceOf[s] == soup.faceOf[t];  // no face ids: one face
         if (trianglesIntersect(tri[s].data(), tri[t].data(), tolerance, sameFace ? 0.0 : otherFaceDepth)) {
           found.insert(key);
           if (pairs && pairs->size() < maxPairs) pairs->emplace_back(s, t);

@@ -16,7 +16,7 @@ class Tessellator;
 struct TriangleSoup {
   std::vector<double> positions;       // x, y, z per vertex
   std::vector<std::uint32_t> indices;  // three per triangle
-  std::vector<std::uint32_t> faceOf;   // the face id of each triangle (for reports)
+  std::vector<std::uint32_t> faceOf;   // the face id of each triangle (optional: empty means one face)
   std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
