@@ -16,7 +16,7 @@ packages=(
   # Vulkan: loader, lavapipe, shader compiler, validation
   libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers vulkan-tools
   # window and UI
-  libglfw3-dev libglm-dev libimgui-dev xvfb xauth
+  libglfw3-dev libglm-dev libimgui-dev libxcb1-dev xvfb xauth
 )
 
 missing=()

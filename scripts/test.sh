@@ -1,8 +1,23 @@
 #!/usr/bin/env bash
-# Sets up a fresh machine, builds everything (Release, warnings as errors) and runs every test suite.
+# Sets up a fresh machine, builds everything (Release, warnings as errors) and runs every test suite,
+# then the sanitizer runs: the CET core under AddressSanitizer + UndefinedBehaviorSanitizer, and the
+# progressive stream (worker threads, rings, cancellation) under ThreadSanitizer, each in its own tree.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
+
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCETVIEW_WERROR=ON
 cmake --build build --parallel 2
 ctest --test-dir build --output-on-failure --parallel 2 --timeout 900
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer: CET core =="
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCETVIEW_CORE_ONLY=ON \
+  -DCETVIEW_SANITIZE=address -DCETVIEW_WERROR=ON
+cmake --build build-asan --parallel 2
+ctest --test-dir build-asan --output-on-failure --parallel 2 --timeout 900
+
+echo "== ThreadSanitizer: progressive stream =="
+cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCETVIEW_SANITIZE=thread \
+  -DCETVIEW_BUILD_BENCH=OFF -DCETVIEW_WERROR=ON
+cmake --build build-tsan --parallel 2 --target stream_tests
+TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/stream/stream_tests

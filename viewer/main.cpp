@@ -1,5 +1,8 @@
 // cetview: one executable, one subcommand per job (DESIGN.md "Command line").
+#include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "commands.h"
 
@@ -11,8 +14,20 @@ int main(int argc, char** argv) {
   cetview::addCdtCommand(app, exitCode);
   cetview::addExportCommand(app, exitCode);
   cetview::addBenchCommand(app, exitCode);
+  cetview::addRenderCommand(app, exitCode);
+  cetview::addViewCommand(app, exitCode);
+  // `view` is the default: `cetview`, `cetview MODEL` and `cetview --frames 5 ...` open the window.
+  std::vector<std::string> args(argv + 1, argv + argc);
+  const bool help = !args.empty() && (args[0] == "-h" || args[0] == "--help" || args[0] == "--version");
+  bool known = false;
+  if (!args.empty()) {
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+      known = known || sub->check_name(args[0]);
+  }
+  if (!help && !known) args.insert(args.begin(), "view");
+  std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
   try {
-    app.parse(argc, argv);
+    app.parse(args);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;

@@ -70,4 +70,26 @@ std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned 
   return out;
 }
 
+std::vector<std::vector<float>> measureTriangles(const Tessellator& t, int level, unsigned threads) {
+  const ModelImpl& model = t.model().impl();
+  std::vector<std::vector<float>> out(model.faces.size());
+  parallelFor(out.size(), threads, [&](std::size_t f, unsigned) {
+    const FaceMesh& m = t.faceMesh(static_cast<FaceId>(f));
+    if (m.levels.empty()) return;
+    const std::size_t k = level < 0 ? m.levels.size() - 1 : std::min<std::size_t>(static_cast<std::size_t>(level), m.levels.size() - 1);
+    const std::vector<std::uint32_t>& idx = m.levels[k];
+    std::vector<float>& d = out[f];
+    d.assign(idx.size() / 3, INFINITY);
+    try {
+      SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        d[i] = static_cast<float>(measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data() + 3 * i, 1));
+      }
+    } catch (const Standard_Failure&) {
+      // Left at INFINITY: the face cannot be measured.
+    }
+  });
+  return out;
+}
+
 }  // namespace cetview::brep

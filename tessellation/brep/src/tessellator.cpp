@@ -133,4 +133,16 @@ std::size_t Tessellator::triangleCount(int level) const {
   return n;
 }
 
+void Tessellator::edgePolyline(EdgeId edge, int level, std::vector<float>& xyz) const {
+  xyz.clear();
+  if (level < 0 || level > impl_->edgeLevel.load() || impl_->edges.degenerated(edge)) return;
+  const EdgePoints& points = impl_->edges.points(edge, level);
+  xyz.reserve(points.p.size() * 3);
+  for (const gp_Pnt& p : points.p) {
+    xyz.push_back(static_cast<float>(p.X()));
+    xyz.push_back(static_cast<float>(p.Y()));
+    xyz.push_back(static_cast<float>(p.Z()));
+  }
+}
+
 }  // namespace cetview::brep

@@ -21,4 +21,9 @@ struct FaceQuality {
 // each projected onto the exact surface by Newton iteration from its interpolated (u, v).
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level = -1, unsigned threads = 1);
 
+// The same measure per triangle (the viewer's deviation heat map): out[f][i] is the deviation of
+// triangle i of face f's level `level` (each face's last level for -1), in the order of
+// faceMesh(f).levels; INFINITY where the surface cannot be evaluated.
+std::vector<std::vector<float>> measureTriangles(const Tessellator& t, int level = -1, unsigned threads = 1);
+
 }  // namespace cetview::brep

@@ -114,6 +114,11 @@ class Tessellator {
   // Triangles of level k over all faces (parts counted once, not per instance).
   std::size_t triangleCount(int level) const;
 
+  // Edge `edge`'s polyline at level k (discretiseEdges(k) has returned), xyz floats in part
+  // coordinates, for drawing B-rep edges; empty for degenerate edges. Safe while faces advance:
+  // a discretised level never changes.
+  void edgePolyline(EdgeId edge, int level, std::vector<float>& xyz) const;
+
   TessellatorImpl& impl() const { return *impl_; }
 
  private:

@@ -1,0 +1,36 @@
+// Per-draw constants: the frame's camera, lights and colour mode moved into each instance's part
+// space (shaders/shared.h, DrawConstants). Pure math, so it is tested without a GPU.
+#pragma once
+
+#include <optional>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "engine/camera.h"
+#include "engine/gpu_structs.h"
+#include "engine/view_style.h"
+
+namespace cetview::engine {
+
+// World-space view of one frame, computed once and shared by every draw.
+struct FrameView {
+  glm::mat4 viewProj{1.0f};
+  glm::vec3 towardsEye{0.0f};            // unit, opposite the view direction
+  glm::vec3 keyLight{0.0f};              // unit direction towards the key light (fixed to the camera)
+  glm::vec3 up{0.0f};                    // unit screen-up
+  std::optional<glm::vec4> forcedColor;  // linear; set when file colours are off
+};
+
+// The key light, in view space: from the upper left, in front of the model.
+glm::vec3 keyLightInView();
+
+FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& style);
+
+// Constants for drawing one instance placed by `model` (part -> world), with its colour override.
+// `twoSided`: normals facing away from the eye are lit as their reverse (false for culled solids).
+DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const std::optional<Color8>& color,
+                            bool twoSided);
+
+}  // namespace cetview::engine

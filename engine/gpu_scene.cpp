@@ -1,0 +1,514 @@
+#include "engine/gpu_scene.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <glm/matrix.hpp>
+
+#include "engine/gpu_structs.h"
+#include "engine/vk_check.h"
+
+namespace cetview::engine {
+namespace {
+
+constexpr VkDeviceSize kFaceDrawSize = sizeof(VkDrawIndexedIndirectCommand);
+constexpr VkDeviceSize kEdgeDrawSize = sizeof(VkDrawIndirectCommand);
+constexpr VkDeviceSize kEdgePointSize = 3 * sizeof(float);
+constexpr VkDeviceSize kMinTableEntries = 256;
+
+}  // namespace
+
+GpuScene::GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options)
+    : device_(device), scene_(scene), options_(options) {
+  indirect_ =
+      options.indirectDraws && device.features.multiDrawIndirect && device.features.drawIndirectFirstInstance;
+}
+
+Result<std::unique_ptr<GpuScene>> GpuScene::create(const Device& device, Scene& scene,
+                                                   const GpuSceneOptions& options) {
+  std::unique_ptr<GpuScene> result(new GpuScene(device, scene, options));
+  CETVIEW_TRY(result->init());
+  return result;
+}
+
+Status GpuScene::init() {
+  constexpr VkBufferUsageFlags copy = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  buffers_[kVertices].usage = copy | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+  buffers_[kIndices].usage = copy | VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
+  buffers_[kEdgePoints].usage = copy | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+  buffers_[kFaceDraws].usage = copy | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+  buffers_[kFaceColors].usage = copy | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  buffers_[kEdgeDraws].usage = copy | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+  const VkDeviceSize initial[kTargetCount] = {
+      std::max<VkDeviceSize>(options_.initialVertexCapacity, 64) * sizeof(MeshVertex),
+      std::max<VkDeviceSize>(options_.initialIndexCapacity, 192) * sizeof(std::uint32_t),
+      std::max<VkDeviceSize>(options_.initialEdgePointCapacity, 64) * kEdgePointSize,
+      kMinTableEntries * kFaceDrawSize,
+      kMinTableEntries * sizeof(std::uint32_t),
+      kMinTableEntries * kEdgeDrawSize,
+  };
+  for (int t = 0; t < kTargetCount; ++t) {
+    auto buffer = createBuffer(device_, initial[t], buffers_[t].usage, MemoryUse::kDeviceLocal);
+    CETVIEW_TRY(buffer);
+    buffers_[t].buffer = *buffer;
+  }
+  indexSlots_ = RangeAllocator(buffers_[kIndices].buffer.size / sizeof(std::uint32_t));
+  edgeSlots_ = RangeAllocator(buffers_[kEdgePoints].buffer.size / kEdgePointSize);
+  generation_ = scene_.generation_;
+  return {};
+}
+
+GpuScene::~GpuScene() {
+  for (Growable& g : buffers_) destroyBuffer(device_, g.buffer);
+}
+
+void GpuScene::reset() {
+  indexSlots_ = RangeAllocator(indexSlots_.capacity());
+  edgeSlots_ = RangeAllocator(edgeSlots_.capacity());
+  faces_.clear();
+  edges_.clear();
+  committedIndices_ = 0;
+  generation_ = scene_.generation_;
+}
+
+Status GpuScene::reserve(Target t, VkDeviceSize bytes, VkDeviceSize keepBytes) {
+  Growable& g = buffers_[t];
+  if (bytes <= g.buffer.size) return {};
+  VkDeviceSize size = std::max<VkDeviceSize>(bytes, g.buffer.size * 2);
+  size = (size + 255) / 256 * 256;
+  auto buffer = createBuffer(device_, size, g.usage, MemoryUse::kDeviceLocal);
+  CETVIEW_TRY(buffer);
+  auto earlier =
+      std::find_if(growths_.begin(), growths_.end(), [t](const Growth& x) { return x.target == t; });
+  if (earlier != growths_.end()) {
+    // Grown twice in one frame: copy straight from the original buffer; the intermediate one was
+    // never referenced by a command and goes at once.
+    destroyBuffer(device_, g.buffer);
+  } else {
+    growths_.push_back(Growth{t, g.buffer, std::min(keepBytes, g.buffer.size)});
+  }
+  g.buffer = *buffer;
+  if (stats_) ++stats_->bufferGrowths;
+  return {};
+}
+
+Status GpuScene::growTables() {
+  auto faceCount = static_cast<std::uint32_t>(faces_.size());
+  std::uint32_t sceneFaces = scene_.faceCount();
+  if (sceneFaces > faceCount) {
+    CETVIEW_TRY(reserve(kFaceDraws, sceneFaces * kFaceDrawSize, faceCount * kFaceDrawSize));
+    CETVIEW_TRY(reserve(kFaceColors, sceneFaces * sizeof(std::uint32_t), faceCount * sizeof(std::uint32_t)));
+    // New faces: no triangles (zero draw commands), their part's colour.
+    fills_.push_back(
+        Fill{kFaceDraws, faceCount * kFaceDrawSize, (sceneFaces - faceCount) * kFaceDrawSize, 0u});
+    for (const Scene::Part& part : scene_.parts_) {
+      std::uint32_t begin = std::max(part.firstFace, faceCount);
+      std::uint32_t end = part.firstFace + part.faceCount;
+      if (begin >= end) continue;
+      fills_.push_back(
+          Fill{kFaceColors, begin * VkDeviceSize{4}, (end - begin) * VkDeviceSize{4}, packColor(part.color)});
+    }
+    faces_.resize(sceneFaces);
+  }
+  auto edgeCount = static_cast<std::uint32_t>(edges_.size());
+  std::uint32_t sceneEdges = scene_.edgeCount();
+  if (sceneEdges > edgeCount) {
+    CETVIEW_TRY(reserve(kEdgeDraws, sceneEdges * kEdgeDrawSize, edgeCount * kEdgeDrawSize));
+    fills_.push_back(
+        Fill{kEdgeDraws, edgeCount * kEdgeDrawSize, (sceneEdges - edgeCount) * kEdgeDrawSize, 0u});
+    edges_.resize(sceneEdges);
+  }
+  return {};
+}
+
+bool GpuScene::stage(std::initializer_list<Piece> pieces, std::uint64_t* ringOffsets) {
+  constexpr std::uint64_t kAlign = UploadRing::kAlignment;
+  std::uint64_t total = 0;
+  for (const Piece& p : pieces) total += (p.size + kAlign - 1) / kAlign * kAlign;
+  if (total == 0) return true;
+  if (total > remaining_ || ringFull_) return false;
+  auto block = ring_->allocate(total);
+  if (!block) {
+    ringFull_ = true;
+    return false;
+  }
+  remaining_ -= total;
+  stats_->bytes += total;
+  std::uint64_t offset = *block;
+  std::size_t i = 0;
+  for (const Piece& p : pieces) {
+    if (ringOffsets) ringOffsets[i++] = offset;
+    if (p.size == 0) continue;
+    std::memcpy(ring_->data(offset), p.data, p.size);
+    copies_[p.target].push_back(VkBufferCopy{offset, p.dstOffset, p.size});
+    offset += (p.size + kAlign - 1) / kAlign * kAlign;
+  }
+  return true;
+}
+
+VkDrawIndexedIndirectCommand GpuScene::faceDraw(std::uint32_t face) const {
+  const FaceSlot& slot = faces_[face];
+  bool visible = scene_.faces_[face].visible && slot.count > 0;
+  VkDrawIndexedIndirectCommand draw{};
+  draw.indexCount = visible ? static_cast<std::uint32_t>(slot.count) : 0u;
+  draw.instanceCount = visible ? 1u : 0u;
+  draw.firstIndex = static_cast<std::uint32_t>(slot.offset);
+  draw.vertexOffset = 0;
+  draw.firstInstance = face;
+  return draw;
+}
+
+bool GpuScene::writeFaceDraw(std::uint32_t face, const Piece* data) {
+  VkDrawIndexedIndirectCommand draw = faceDraw(face);
+  FaceSlot& slot = faces_[face];
+  Piece command{kFaceDraws, face * kFaceDrawSize, &draw, sizeof(draw)};
+  if (slot.drawWrittenFrame == frame_) {
+    // Already staged this frame: two copies to one destination in one command would overlap, so
+    // rewrite the bytes the recorded copy reads (it executes after submission).
+    if (data && !stage({*data})) return false;
+    std::memcpy(ring_->data(slot.drawRingOffset), &draw, sizeof(draw));
+  } else {
+    std::uint64_t offsets[2] = {0, 0};
+    bool staged = data ? stage({command, *data}, offsets) : stage({command}, offsets);
+    if (!staged) return false;
+    slot.drawWrittenFrame = frame_;
+    slot.drawRingOffset = offsets[0];
+  }
+  scene_.faceDrawsDirty_.unmark(face);
+  return true;
+}
+
+void GpuScene::uploadFaceColors() {
+  std::uint32_t id = 0;
+  while (scene_.faceColorsDirty_.front(&id)) {
+    std::uint32_t packed = packColor(scene_.faces_[id].color);
+    if (!stage(kFaceColors, id * VkDeviceSize{4}, &packed, sizeof(packed))) return;
+    scene_.faceColorsDirty_.popFront();
+  }
+}
+
+void GpuScene::uploadFaceVisibility() {
+  std::uint32_t id = 0;
+  while (scene_.faceDrawsDirty_.front(&id)) {
+    if (!writeFaceDraw(id)) return;  // writeFaceDraw() unmarks it
+  }
+}
+
+Status GpuScene::uploadVertices() {
+  std::uint64_t uploaded = scene_.uploadedVertices_;
+  std::uint64_t total = scene_.vertices_.size();
+  if (uploaded == total) return {};
+  // Whole 16-byte units of budget, so the aligned charge never exceeds what is left.
+  std::uint64_t count =
+      std::min<std::uint64_t>(total - uploaded, (remaining_ & ~std::uint64_t{15}) / sizeof(MeshVertex));
+  if (count == 0) return {};
+  CETVIEW_TRY(reserve(kVertices, (uploaded + count) * sizeof(MeshVertex), uploaded * sizeof(MeshVertex)));
+  if (!stage(kVertices, uploaded * sizeof(MeshVertex), &scene_.vertices_[uploaded],
+             count * sizeof(MeshVertex))) {
+    return {};
+  }
+  scene_.uploadedVertices_ = static_cast<std::uint32_t>(uploaded + count);
+  stats_->vertices += static_cast<std::uint32_t>(count);
+  return {};
+}
+
+namespace {
+
+// Budget bytes a final piece of `bytes` plus a draw command of `drawBytes` costs.
+std::uint64_t finalCost(std::uint64_t bytes, std::uint64_t drawBytes) {
+  constexpr std::uint64_t kAlign = UploadRing::kAlignment;
+  return (bytes + kAlign - 1) / kAlign * kAlign + (drawBytes + kAlign - 1) / kAlign * kAlign;
+}
+
+}  // namespace
+
+Status GpuScene::uploadFaces() {
+  constexpr std::uint64_t kIndexSize = sizeof(std::uint32_t);
+  while (scene_.faceQueueHead_ < scene_.faceQueue_.size()) {
+    std::uint32_t id = scene_.faceQueue_[scene_.faceQueueHead_];
+    Scene::Face& face = scene_.faces_[id];
+    FaceSlot& slot = faces_[id];
+    // Indices may only reach the GPU after the vertices they use (queue order keeps this cheap).
+    if (face.requiredVertices > scene_.uploadedVertices_) return {};
+    std::uint64_t n = face.pending.size();
+
+    if (!slot.uploading || slot.serial != face.serial) {
+      if (slot.uploading && !slot.inPlace)
+        indexSlots_.free(slot.newOffset, slot.newCapacity);  // replaced mid-upload
+      // In place only when this frame can finish it: a committed slot is never left half new.
+      slot.inPlace = n == 0 || (n <= slot.capacity && finalCost(n * kIndexSize, kFaceDrawSize) <= remaining_);
+      if (slot.inPlace) {
+        slot.newOffset = slot.offset;
+        slot.newCapacity = slot.capacity;
+      } else {
+        auto offset = indexSlots_.allocate(n);
+        if (!offset) {
+          std::uint64_t capacity = indexSlots_.capacity();
+          CETVIEW_TRY(
+              reserve(kIndices, std::max(capacity * 2, capacity + n) * kIndexSize, capacity * kIndexSize));
+          indexSlots_.grow(buffers_[kIndices].buffer.size / kIndexSize);
+          offset = indexSlots_.allocate(n);
+        }
+        slot.newOffset = *offset;
+        slot.newCapacity = n;
+      }
+      slot.uploading = true;
+      slot.serial = face.serial;
+      slot.done = 0;
+    }
+
+    std::uint64_t left = n - slot.done;
+    if (!slot.inPlace && finalCost(left * kIndexSize, kFaceDrawSize) > remaining_) {
+      // Cannot finish this frame: fill the new slot as far as the budget goes.
+      std::uint64_t chunk = std::min(left, (remaining_ & ~std::uint64_t{15}) / kIndexSize);
+      if (chunk > 0 && stage(kIndices, (slot.newOffset + slot.done) * kIndexSize,
+                             face.pending.data() + slot.done, chunk * kIndexSize)) {
+        slot.done += chunk;
+      }
+      return {};
+    }
+
+    // Finish: the last indices and the switched draw command go in one staged block.
+    FaceSlot before = slot;
+    slot.offset = slot.newOffset;
+    slot.capacity = slot.newCapacity;
+    slot.count = n;
+    Piece last{kIndices, (slot.newOffset + slot.done) * kIndexSize, face.pending.data() + slot.done,
+               left * kIndexSize};
+    if (!writeFaceDraw(id, left > 0 ? &last : nullptr)) {
+      slot = before;
+      if (slot.inPlace) slot.uploading = false;  // nothing was written: decide afresh next frame
+      return {};
+    }
+    if (!before.inPlace && before.capacity > 0) indexSlots_.free(before.offset, before.capacity);
+    if (n == 0 && slot.capacity > 0) {
+      indexSlots_.free(slot.offset, slot.capacity);  // an emptied face keeps no slot
+      slot.offset = slot.capacity = 0;
+    }
+    committedIndices_ = committedIndices_ - before.count + n;
+    slot.uploading = false;
+    face.queued = false;
+    scene_.pendingIndexBytes_ -= n * kIndexSize;
+    std::vector<std::uint32_t>().swap(face.pending);
+    ++stats_->facesCompleted;
+    if (++scene_.faceQueueHead_ == scene_.faceQueue_.size()) {
+      scene_.faceQueue_.clear();
+      scene_.faceQueueHead_ = 0;
+    }
+  }
+  return {};
+}
+
+Status GpuScene::uploadEdges() {
+  while (scene_.edgeQueueHead_ < scene_.edgeQueue_.size()) {
+    std::uint32_t id = scene_.edgeQueue_[scene_.edgeQueueHead_];
+    Scene::Edge& edge = scene_.edges_[id];
+    EdgeSlot& slot = edges_[id];
+    std::uint64_t n = edge.pending.size() / 3;  // points
+
+    if (!slot.uploading || slot.serial != edge.serial) {
+      if (slot.uploading && !slot.inPlace) edgeSlots_.free(slot.newOffset, slot.newCapacity);
+      slot.inPlace =
+          n == 0 || (n <= slot.capacity && finalCost(n * kEdgePointSize, kEdgeDrawSize) <= remaining_);
+      if (slot.inPlace) {
+        slot.newOffset = slot.offset;
+        slot.newCapacity = slot.capacity;
+      } else {
+        auto offset = edgeSlots_.allocate(n);
+        if (!offset) {
+          std::uint64_t capacity = edgeSlots_.capacity();
+          CETVIEW_TRY(reserve(kEdgePoints, std::max(capacity * 2, capacity + n) * kEdgePointSize,
+                              capacity * kEdgePointSize));
+          edgeSlots_.grow(buffers_[kEdgePoints].buffer.size / kEdgePointSize);
+          offset = edgeSlots_.allocate(n);
+        }
+        slot.newOffset = *offset;
+        slot.newCapacity = n;
+      }
+      slot.uploading = true;
+      slot.serial = edge.serial;
+      slot.done = 0;
+    }
+
+    std::uint64_t left = n - slot.done;
+    if (!slot.inPlace && finalCost(left * kEdgePointSize, kEdgeDrawSize) > remaining_) {
+      std::uint64_t chunk = std::min(left, (remaining_ & ~std::uint64_t{15}) / kEdgePointSize);
+      if (chunk > 0 && stage(kEdgePoints, (slot.newOffset + slot.done) * kEdgePointSize,
+                             edge.pending.data() + 3 * slot.done, chunk * kEdgePointSize)) {
+        slot.done += chunk;
+      }
+      return {};
+    }
+
+    VkDrawIndirectCommand draw{};
+    draw.vertexCount = static_cast<std::uint32_t>(n);
+    draw.instanceCount = n > 0 ? 1u : 0u;
+    draw.firstVertex = static_cast<std::uint32_t>(slot.newOffset);
+    draw.firstInstance = id;
+    Piece command{kEdgeDraws, id * kEdgeDrawSize, &draw, sizeof(draw)};
+    Piece last{kEdgePoints, (slot.newOffset + slot.done) * kEdgePointSize,
+               edge.pending.data() + 3 * slot.done, left * kEdgePointSize};
+    if (!stage({command, last})) {
+      if (slot.inPlace) slot.uploading = false;
+      return {};
+    }
+    if (!slot.inPlace && slot.capacity > 0) edgeSlots_.free(slot.offset, slot.capacity);
+    slot.offset = slot.newOffset;
+    slot.capacity = slot.newCapacity;
+    slot.count = n;
+    if (n == 0 && slot.capacity > 0) {
+      edgeSlots_.free(slot.offset, slot.capacity);
+      slot.offset = slot.capacity = 0;
+    }
+    slot.uploading = false;
+    edge.queued = false;
+    scene_.pendingEdgeBytes_ -= edge.pending.size() * sizeof(float);
+    std::vector<float>().swap(edge.pending);
+    ++stats_->edgesCompleted;
+    if (++scene_.edgeQueueHead_ == scene_.edgeQueue_.size()) {
+      scene_.edgeQueue_.clear();
+      scene_.edgeQueueHead_ = 0;
+    }
+  }
+  return {};
+}
+
+Status GpuScene::recordUploads(VkCommandBuffer cmd, UploadRing& ring, std::uint64_t budget,
+                               std::vector<Buffer>& retired, UploadStats* stats) {
+  UploadStats local;
+  stats_ = stats ? stats : &local;
+  *stats_ = UploadStats{};
+  ring_ = &ring;
+  remaining_ = budget;
+  ringFull_ = false;
+  ++frame_;
+  if (generation_ != scene_.generation_) reset();
+
+  Status status = growTables();
+  // Small, interactive changes first so toggles stay responsive while geometry streams in.
+  if (status) uploadFaceColors();
+  if (status) uploadFaceVisibility();
+  if (status) status = uploadVertices();
+  if (status) status = uploadFaces();
+  if (status) status = uploadEdges();
+  // Whatever was staged before a failure is still recorded, so CPU and GPU state stay in step.
+  emit(cmd, retired);
+  stats_->workLeft = scene_.uploadsPending();
+  stats_ = nullptr;
+  ring_ = nullptr;
+  return status;
+}
+
+void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
+  bool anyCopy =
+      std::any_of(std::begin(copies_), std::end(copies_), [](const auto& c) { return !c.empty(); });
+  if (growths_.empty() && fills_.empty() && !anyCopy) return;
+
+  // Earlier frames' reads and transfers finish before this frame's transfers touch the buffers.
+  memoryBarrier(cmd,
+                VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                    VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                    VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+  for (Growth& g : growths_) {
+    if (g.keepBytes > 0) {
+      VkBufferCopy region{0, 0, g.keepBytes};
+      vkCmdCopyBuffer(cmd, g.old.buffer, buffers_[g.target].buffer.buffer, 1, &region);
+    }
+    retired.push_back(g.old);
+  }
+  for (const Fill& f : fills_) {
+    if (f.size > 0) vkCmdFillBuffer(cmd, buffers_[f.target].buffer.buffer, f.offset, f.size, f.value);
+  }
+  if (!growths_.empty() || !fills_.empty()) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+  }
+  for (int t = 0; t < kTargetCount; ++t) {
+    if (copies_[t].empty()) continue;
+    vkCmdCopyBuffer(cmd, ring_->buffer(), buffers_[t].buffer.buffer,
+                    static_cast<std::uint32_t>(copies_[t].size()), copies_[t].data());
+    copies_[t].clear();
+  }
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                    VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT |
+                    VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
+  growths_.clear();
+  fills_.clear();
+}
+
+void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
+                               VkPipeline twoSided, VkPipeline culled) const {
+  if (committedIndices_ == 0) return;
+  VkDeviceSize zero = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kVertices].buffer.buffer, &zero);
+  vkCmdBindIndexBuffer(cmd, buffers_[kIndices].buffer.buffer, 0, VK_INDEX_TYPE_UINT32);
+  std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (const Scene::Instance& instance : scene_.instances_) {
+    if (!instance.visible) continue;
+    const Scene::Part& part = scene_.parts_[instance.part];
+    // Only faces this GpuScene already knows (tables grow at the start of each upload).
+    std::uint32_t end =
+        std::min<std::uint32_t>(part.firstFace + part.faceCount, static_cast<std::uint32_t>(faces_.size()));
+    if (part.firstFace >= end) continue;
+    // A mirroring transform turns counter-clockwise triangles clockwise: no culling then.
+    bool cull = part.closedSolid && glm::determinant(glm::mat3(instance.transform)) > 0.0f;
+    VkPipeline pipeline = cull ? culled : twoSided;
+    if (pipeline != bound) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+      bound = pipeline;
+    }
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(constants), &constants);
+    if (indirect_) {
+      for (std::uint32_t first = part.firstFace; first < end; first += maxDraws) {
+        std::uint32_t count = std::min(end - first, maxDraws);
+        vkCmdDrawIndexedIndirect(cmd, buffers_[kFaceDraws].buffer.buffer, first * kFaceDrawSize, count,
+                                 static_cast<std::uint32_t>(kFaceDrawSize));
+      }
+    } else {
+      for (std::uint32_t f = part.firstFace; f < end; ++f) {
+        const FaceSlot& slot = faces_[f];
+        if (slot.count == 0 || !scene_.faces_[f].visible) continue;
+        vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(slot.count), 1,
+                         static_cast<std::uint32_t>(slot.offset), 0, f);
+      }
+    }
+  }
+}
+
+void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const {
+  VkDeviceSize zero = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kEdgePoints].buffer.buffer, &zero);
+  std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
+  for (const Scene::Instance& instance : scene_.instances_) {
+    if (!instance.visible) continue;
+    const Scene::Part& part = scene_.parts_[instance.part];
+    std::uint32_t end =
+        std::min<std::uint32_t>(part.firstEdge + part.edgeCount, static_cast<std::uint32_t>(edges_.size()));
+    if (part.firstEdge >= end) continue;
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(constants), &constants);
+    if (indirect_) {
+      for (std::uint32_t first = part.firstEdge; first < end; first += maxDraws) {
+        std::uint32_t count = std::min(end - first, maxDraws);
+        vkCmdDrawIndirect(cmd, buffers_[kEdgeDraws].buffer.buffer, first * kEdgeDrawSize, count,
+                          static_cast<std::uint32_t>(kEdgeDrawSize));
+      }
+    } else {
+      for (std::uint32_t e = part.firstEdge; e < end; ++e) {
+        const EdgeSlot& slot = edges_[e];
+        if (slot.count == 0) continue;
+        vkCmdDraw(cmd, static_cast<std::uint32_t>(slot.count), 1, static_cast<std::uint32_t>(slot.offset), e);
+      }
+    }
+  }
+}
+
+}  // namespace cetview::engine

@@ -1,0 +1,169 @@
+// The GPU copy of a Scene: growable device-local buffers and the per-frame upload of what changed.
+//
+// Buffers (all device-local, filled only by copies from the upload ring):
+//   vertices    MeshVertex[], append-only, as Scene's array
+//   indices     uint32[]; each face owns a slot (RangeAllocator) holding its current triangles
+//   edgePoints  float3[]; each edge owns a slot holding its line list
+//   faceDraws   VkDrawIndexedIndirectCommand per face, firstInstance = face id
+//   faceColors  packed sRGB RGBA8 per face (storage buffer, indexed by gl_InstanceIndex)
+//   edgeDraws   VkDrawIndirectCommand per edge
+// Instances are not uploaded: each draw's push constants carry its transform (draw_constants.h).
+//
+// A face's new index array goes in place when it fits its slot and the whole array fits this
+// frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
+// face's draw command switches to it in the frame whose copies complete it. The draw command is
+// rewritten in that same frame, so a freed slot is never drawn from after it is reused. All copies
+// of a frame are recorded before its render pass, between global barriers (previous frames' reads
+// -> transfer, transfer -> this frame's reads), so in-place overwrites and slot reuse are safe.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <memory>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "engine/context.h"
+#include "engine/draw_constants.h"
+#include "engine/range_allocator.h"
+#include "engine/resources.h"
+#include "engine/scene.h"
+#include "engine/upload_ring.h"
+
+namespace cetview::engine {
+
+struct GpuSceneOptions {
+  std::uint64_t initialVertexCapacity = 1u << 16;     // vertices (buffers double when full)
+  std::uint64_t initialIndexCapacity = 1u << 18;      // uint32 indices
+  std::uint64_t initialEdgePointCapacity = 1u << 14;  // edge points
+  bool indirectDraws = true;  // multi-draw indirect where the device allows; false: one call per face
+};
+
+// What one frame's upload did.
+struct UploadStats {
+  std::uint64_t bytes = 0;           // copied through the upload ring
+  std::uint32_t vertices = 0;        // appended vertices uploaded
+  std::uint32_t facesCompleted = 0;  // faces whose new index array is drawn from this frame on
+  std::uint32_t edgesCompleted = 0;
+  std::uint32_t bufferGrowths = 0;  // device buffers replaced by larger ones
+  bool workLeft = false;            // the budget (or ring) ran out with changes still waiting
+};
+
+class GpuScene {
+ public:
+  // Errors: as createBuffer().
+  static Result<std::unique_ptr<GpuScene>> create(const Device& device, Scene& scene,
+                                                  const GpuSceneOptions& options);
+  // The device must be idle (nothing in flight reads these buffers).
+  ~GpuScene();
+  GpuScene(const GpuScene&) = delete;
+  GpuScene& operator=(const GpuScene&) = delete;
+
+  // Records, into `cmd` outside a render pass, the copies of up to `budget` bytes of the Scene's
+  // pending changes, staged in `ring`. Buffers replaced by larger ones are appended to `retired`;
+  // destroy them once this command buffer has finished executing.
+  Status recordUploads(VkCommandBuffer cmd, UploadRing& ring, std::uint64_t budget,
+                       std::vector<Buffer>& retired, UploadStats* stats);
+
+  // Inside a render pass: every visible face of every visible instance, with `culled` for
+  // instances of closed solids that are not mirrored and `twoSided` for the rest (both mesh.vert
+  // pipelines; they may be the same). Binds the pipelines itself.
+  void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
+                       VkPipeline twoSided, VkPipeline culled) const;
+  // Inside a render pass with the edge pipeline bound: every edge of every visible instance.
+  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const;
+
+  VkBuffer faceColorBuffer() const { return buffers_[kFaceColors].buffer.buffer; }
+  bool usesIndirectDraws() const { return indirect_; }
+  std::uint64_t committedTriangles() const { return committedIndices_ / 3; }  // per instance of each part
+  std::uint32_t uploadedVertices() const { return scene_.uploadedVertices_; }
+
+ private:
+  enum Target { kVertices, kIndices, kEdgePoints, kFaceDraws, kFaceColors, kEdgeDraws, kTargetCount };
+
+  struct Growable {
+    Buffer buffer;
+    VkBufferUsageFlags usage = 0;
+  };
+  struct Growth {
+    Target target;
+    Buffer old;
+    VkDeviceSize keepBytes;  // [0, keepBytes) of `old` moves to the new buffer
+  };
+  struct Fill {
+    Target target;
+    VkDeviceSize offset, size;
+    std::uint32_t value;
+  };
+  // GPU-side state of one face: its committed slot and an upload in progress.
+  struct FaceSlot {
+    std::uint64_t offset = 0, capacity = 0, count = 0;  // committed: drawn from
+    bool uploading = false;
+    bool inPlace = false;      // the upload overwrites the committed slot
+    std::uint64_t serial = 0;  // Scene::Face::serial being uploaded
+    std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
+    std::uint64_t drawWrittenFrame = 0;  // frame whose copies already hold its draw
+    std::uint64_t drawRingOffset = 0;
+  };
+  struct EdgeSlot {
+    std::uint64_t offset = 0, capacity = 0, count = 0;
+    bool uploading = false;
+    bool inPlace = false;
+    std::uint64_t serial = 0;
+    std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
+  };
+
+  GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options);
+  Status init();
+  void reset();
+  // Makes buffers_[t] at least `bytes` large, keeping [0, keepBytes) of its content.
+  Status reserve(Target t, VkDeviceSize bytes, VkDeviceSize keepBytes);
+  Status growTables();
+  // One copy to stage: `size` bytes from `data` to `target` at `dstOffset`.
+  struct Piece {
+    Target target;
+    VkDeviceSize dstOffset;
+    const void* data;
+    std::uint64_t size;
+  };
+  // Stages every piece or none, in one ring block charged (16-byte aligned) to the budget; false
+  // when the budget or the ring is out. `ringOffsets`, when given, receives each piece's offset.
+  bool stage(std::initializer_list<Piece> pieces, std::uint64_t* ringOffsets = nullptr);
+  bool stage(Target target, VkDeviceSize dstOffset, const void* data, std::uint64_t size) {
+    return stage({Piece{target, dstOffset, data, size}});
+  }
+  VkDrawIndexedIndirectCommand faceDraw(std::uint32_t face) const;
+  // Stages face `face`'s draw command (from its committed slot), together with `data` when given.
+  bool writeFaceDraw(std::uint32_t face, const Piece* data = nullptr);
+  Status uploadVertices();
+  Status uploadFaces();
+  Status uploadEdges();
+  void uploadFaceColors();
+  void uploadFaceVisibility();
+  void emit(VkCommandBuffer cmd, std::vector<Buffer>& retired);
+
+  const Device& device_;
+  Scene& scene_;
+  GpuSceneOptions options_;
+  bool indirect_ = false;
+  std::uint64_t generation_ = 0;
+  Growable buffers_[kTargetCount];
+  RangeAllocator indexSlots_;
+  RangeAllocator edgeSlots_;
+  std::vector<FaceSlot> faces_;
+  std::vector<EdgeSlot> edges_;
+  std::uint64_t committedIndices_ = 0;
+
+  // Per-frame recording state.
+  UploadRing* ring_ = nullptr;
+  std::uint64_t remaining_ = 0;
+  std::uint64_t frame_ = 0;
+  UploadStats* stats_ = nullptr;
+  bool ringFull_ = false;
+  std::vector<VkBufferCopy> copies_[kTargetCount];
+  std::vector<Growth> growths_;
+  std::vector<Fill> fills_;
+};
+
+}  // namespace cetview::engine

@@ -1,0 +1,36 @@
+// Declarations every cetview shader shares: the descriptor set, push constants and colour helpers.
+// Included after shared.h (GL_GOOGLE_include_directive); the C++ side of each block is in shared.h.
+#ifndef CETVIEW_SHADERS_COMMON_GLSL
+#define CETVIEW_SHADERS_COMMON_GLSL
+
+layout(set = 0, binding = CETVIEW_BINDING_GLOBALS) uniform GlobalsBlock {
+  Globals globals;
+};
+
+layout(set = 0, binding = CETVIEW_BINDING_FACES, std430) readonly buffer FaceBlock {
+  uint faceColors[];
+};
+
+layout(push_constant) uniform PushBlock {
+  DrawConstants draw;
+};
+
+// sRGB -> linear: a cubic fit of the IEC 61966-2-1 curve (within 0.3%), cheap enough per vertex
+// on software rasterisers where pow() is not.
+vec3 srgbToLinear(vec3 c) {
+  return c * (c * (c * 0.305306011 + 0.682171111) + 0.012522878);
+}
+
+// Linear -> sRGB (exact), only for UNORM targets.
+vec3 linearToSrgb(vec3 c) {
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
+}
+
+// Final colour for the target: sRGB targets encode in hardware, UNORM ones need it done here.
+vec4 toTarget(vec3 linearColor) {
+  vec3 c = clamp(linearColor, 0.0, 1.0);
+  if ((globals.flags.x & CETVIEW_FLAG_ENCODE_SRGB) != 0u) c = linearToSrgb(c);
+  return vec4(c, 1.0);
+}
+
+#endif  // CETVIEW_SHADERS_COMMON_GLSL

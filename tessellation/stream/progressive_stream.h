@@ -1,0 +1,90 @@
+// The producer side of progressive loading (DESIGN.md "Data flow", steps 2-6): worker threads take a
+// model coarse to fine, level-major (every face reaches level k before any face goes finer, so the
+// whole model is on screen first), larger faces first within a level, and publish each face's level
+// into their own SpscRing. A control ring carries one kLevelDone record per completed level.
+//
+// Threads: one coordinator runs the levels; per level it discretises the edges (all threads) and
+// then runs `threads` workers over the faces. A full ring makes its worker wait (back-pressure);
+// setTargetLevel() and the destructor cancel outstanding work at once (the tessellator checks the
+// flag between refinement passes), and a cancelled level resumes from its current state later.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "brep/tessellator.h"
+#include "stream/spsc_ring.h"
+#include "stream/update_records.h"
+
+namespace cetview::stream {
+
+struct StreamOptions {
+  unsigned threads = 1;
+  std::size_t ringBytes = std::size_t{4} << 20;  // per worker; larger records are fragmented
+};
+
+// A snapshot of progress, for panels and the terminal.
+struct StreamProgress {
+  int levelInProgress = -1;      // -1 when idle
+  int lastCompleteLevel = -1;
+  std::uint32_t facesDoneInLevel = 0;
+  std::uint32_t faceCount = 0;
+  int targetLevel = 0;
+};
+
+class ProgressiveStream {
+ public:
+  // `tessellator` must outlive the stream and not be advanced by anyone else meanwhile. Starts
+  // working towards `targetLevel` (clamped to the schedule) at once.
+  ProgressiveStream(brep::Tessellator& tessellator, int targetLevel, const StreamOptions& options);
+  ~ProgressiveStream();  // cancels and joins; returns within about one refinement pass
+  ProgressiveStream(const ProgressiveStream&) = delete;
+  ProgressiveStream& operator=(const ProgressiveStream&) = delete;
+
+  // Any thread. Finer: work continues from the current state. Coarser: work beyond it is cancelled
+  // (faces already finer keep their levels; the consumer decides what to show).
+  void setTargetLevel(int level);
+  int targetLevel() const { return target_.load(); }
+  StreamProgress progress() const;
+  // True once every face reached the target level and the coordinator waits.
+  bool idle() const;
+
+  // Consumer side: the worker rings and the control ring (read from one consumer thread only).
+  std::size_t workerRingCount() const { return rings_.size(); }
+  SpscRing& workerRing(std::size_t i) { return *rings_[i]; }
+  SpscRing& controlRing() { return *control_; }
+
+ private:
+  void coordinate();
+  bool runLevel(int level);
+  void publishFace(RecordWriter& writer, std::vector<std::uint8_t>& buffer, brep::FaceId face, int level,
+                   brep::FaceStatus status, std::uint32_t& sentVertices);
+  bool waitForSpace();
+  void publishEdges(int level);
+
+  brep::Tessellator& tess_;
+  StreamOptions options_;
+  std::vector<brep::FaceId> order_;  // faces by decreasing area
+  std::vector<std::uint32_t> sent_;  // per face: vertices already published
+  std::vector<std::unique_ptr<SpscRing>> rings_;
+  std::unique_ptr<SpscRing> control_;
+  std::chrono::steady_clock::time_point start_;
+
+  std::atomic<int> target_{0};
+  std::atomic<int> inProgress_{-1};
+  std::atomic<int> complete_{-1};
+  std::atomic<std::uint32_t> facesDone_{0};
+  std::atomic<bool> cancel_{false};  // abandon the level in progress
+  std::atomic<bool> stop_{false};    // shut down
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread coordinator_;
+};
+
+}  // namespace cetview::stream

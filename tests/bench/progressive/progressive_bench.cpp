@@ -1,0 +1,168 @@
+// Progressive loading against BRepMesh, side by side in one run (DESIGN.md "Benchmarks"): time to
+// the first complete frame and to each level, next to BRepMesh_IncrementalMesh's full tessellation
+// time at the same final deflection; bytes uploaded per frame; the longest frame while loading
+// against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU).
+//   progressive_bench [--threads N] [--deflection 0.1%] MODEL...   (MODEL: a file or "demo")
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "brep/bench.h"
+#include "brep/tessellator.h"
+#include "engine/context.h"
+#include "engine/renderer.h"
+#include "model_scene.h"
+#include "stream/progressive_stream.h"
+#include "stream/stream_consumer.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+struct Row {
+  std::string model;
+  std::size_t faces = 0;
+  double brepmesh = 0, firstFrame = 0, lastLevel = 0, longestLoading = 0, idle = 0;
+  std::vector<double> levelMs;
+  double meanBytes = 0, maxBytes = 0;
+  std::string error;
+};
+
+Row measure(const std::string& path, const cetview::brep::MeshParams& params, unsigned threads,
+            const cetview::engine::Device& device) {
+  namespace brep = cetview::brep;
+  namespace engine = cetview::engine;
+  Row row;
+  row.model = path;
+  brep::BenchOptions bench;
+  bench.params = params;
+  bench.threads = 1;
+  bench.measure = false;
+  const brep::BenchResult reference = brep::benchModel(path, bench);
+  if (!reference.error.empty()) {
+    row.error = reference.error;
+    return row;
+  }
+  row.brepmesh = reference.brepmesh_ms;
+
+  auto loaded = brep::loadModel(path);
+  if (!loaded) {
+    row.error = loaded.error;
+    return row;
+  }
+  row.faces = loaded.model->faces().size();
+  const auto start = Clock::now();  // the model finished loading
+  auto created = brep::Tessellator::create(*loaded.model, params);
+  if (!created.tessellator) {
+    row.error = created.error;
+    return row;
+  }
+  auto renderer = engine::Renderer::createHeadless(device, {1280, 720});
+  if (!renderer) {
+    row.error = renderer.error().message;
+    return row;
+  }
+  engine::Renderer& r = **renderer;
+  cetview::ModelScene link(*loaded.model, r.scene());
+  const int last = created.tessellator->lastLevel();
+  cetview::stream::StreamOptions options;
+  options.threads = threads;
+  cetview::stream::ProgressiveStream producer(*created.tessellator, last, options);
+  cetview::stream::StreamConsumer consumer(producer, row.faces);
+  consumer.setShowLevel(last, link);
+  const engine::Camera camera = engine::standardView(engine::StandardView::kIso, link.bounds(), r.aspect());
+  std::size_t frames = 0;
+  double bytes = 0;
+  int seen = -1;
+  for (;;) {
+    const auto frameStart = Clock::now();
+    consumer.poll(std::size_t{64} << 20, link);
+    auto status = r.drawFrame(camera);
+    if (!status) {
+      row.error = status.error().message;
+      return row;
+    }
+    row.longestLoading = std::max(row.longestLoading, msSince(frameStart));
+    const double b = static_cast<double>(r.lastUploadStats().bytes);
+    bytes += b;
+    row.maxBytes = std::max(row.maxBytes, b);
+    ++frames;
+    // A level counts once every face reached it and everything it needs is on the GPU.
+    while (seen < consumer.completeLevel() && !r.scene().uploadsPending()) {
+      ++seen;
+      row.levelMs.push_back(msSince(start));
+    }
+    if (seen == last) break;
+  }
+  row.firstFrame = row.levelMs.front();
+  row.lastLevel = row.levelMs.back();
+  row.meanBytes = bytes / static_cast<double>(frames);
+  std::vector<double> idle;
+  for (int i = 0; i < 9; ++i) {
+    const auto t = Clock::now();
+    if (!r.drawFrame(camera)) break;
+    idle.push_back(msSince(t));
+  }
+  if (auto s = r.waitIdle(); !s) row.error = s.error().message;
+  std::sort(idle.begin(), idle.end());
+  row.idle = idle.empty() ? 0 : idle[idle.size() / 2];
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace brep = cetview::brep;
+  namespace engine = cetview::engine;
+  unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  brep::MeshParams params;
+  std::vector<std::string> models;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
+      threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
+    } else if (!std::strcmp(argv[i], "--deflection") && i + 1 < argc) {
+      if (std::string e = brep::parseDeflection(argv[++i], params.chordal); !e.empty()) {
+        std::fprintf(stderr, "progressive_bench: %s\n", e.c_str());
+        return 2;
+      }
+    } else {
+      models.emplace_back(argv[i]);
+    }
+  }
+  if (models.empty()) models.emplace_back("demo");
+  auto instance = engine::createInstance({});
+  if (!instance) {
+    std::fprintf(stderr, "progressive_bench: %s\n", instance.error().message.c_str());
+    return 1;
+  }
+  auto device = engine::createDevice(*instance, {});
+  if (!device) {
+    std::fprintf(stderr, "progressive_bench: %s\n", device.error().message.c_str());
+    return 1;
+  }
+  std::printf("device: %s, %u tessellation thread(s), 1280x720\n", device->name.c_str(), threads);
+  std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %9s %11s  %s\n", "model", "faces", "brepmesh ms", "1st frame",
+              "ratio", "final ms", "max frame ms", "idle ms", "MB/frame", "max MB/frm", "ms per level");
+  for (const std::string& m : models) {
+    const Row row = measure(m, params, threads, *device);
+    const std::string name = m.size() > 34 ? "..." + m.substr(m.size() - 31) : m;
+    if (!row.error.empty()) {
+      std::printf("%-34s error: %s\n", name.c_str(), row.error.c_str());
+      continue;
+    }
+    std::string levels;
+    for (double t : row.levelMs) levels += (levels.empty() ? "" : " ") + std::to_string(static_cast<int>(t));
+    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %11.1f %12.1f %10.1f %9.2f %11.2f  %s\n", name.c_str(), row.faces,
+                row.brepmesh, row.firstFrame, row.firstFrame / row.brepmesh, row.lastLevel, row.longestLoading,
+                row.idle, row.meanBytes / 1e6, row.maxBytes / 1e6, levels.c_str());
+    std::fflush(stdout);
+  }
+  engine::destroyDevice(*device);
+  engine::destroyInstance(*instance);
+  return 0;
+}

@@ -1,0 +1,324 @@
+// Progressive updates on a live renderer: a replaced face changes only its own part of the image,
+// large changes spread over frames within the byte budget without ever showing half a face,
+// buffers grow, visibility and colour toggles, and the direct-draw path matches the indirect one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "engine/render_to_png.h"
+#include "image_compare.h"
+#include "render_fixture.h"
+#include "test_meshes.h"
+
+namespace cetview::test {
+namespace {
+
+using namespace engine;
+
+constexpr std::uint32_t kSize = 256;
+constexpr std::uint32_t kTopFace = 4;  // cube(): +Z side
+
+class UpdateTest : public VulkanTest {
+ protected:
+  Renderer* load(const MeshData& mesh, RendererOptions options = {}) {
+    Renderer* r = makeHeadless(kSize, kSize, options);
+    if (r == nullptr) return nullptr;
+    auto part = addMesh(r->scene(), mesh);
+    EXPECT_TRUE(part.ok()) << part.error().message;
+    return r;
+  }
+
+  RgbaImage shot(Renderer& r, const Camera& camera, const ViewStyle& style = {}) {
+    auto image = r.capture(camera, style);
+    EXPECT_TRUE(image.ok()) << image.error().message;
+    return image.ok() ? *image : RgbaImage{};
+  }
+};
+
+// Pixel-space box around the projections of `points`, grown by `margin` pixels.
+struct PixelBox {
+  float minX, minY, maxX, maxY;
+  bool contains(std::uint32_t x, std::uint32_t y) const {
+    return float(x) >= minX && float(x) <= maxX && float(y) >= minY && float(y) <= maxY;
+  }
+};
+
+PixelBox project(const Camera& camera, float aspect, const std::vector<MeshVertex>& points, float margin) {
+  glm::mat4 m = projectionMatrix(camera, aspect) * viewMatrix(camera);
+  PixelBox box{1e9f, 1e9f, -1e9f, -1e9f};
+  for (const MeshVertex& v : points) {
+    glm::vec4 clip = m * glm::vec4(v.position[0], v.position[1], v.position[2], 1.0f);
+    float x = (clip.x / clip.w * 0.5f + 0.5f) * kSize;
+    float y = (clip.y / clip.w * 0.5f + 0.5f) * kSize;
+    box = {std::min(box.minX, x), std::min(box.minY, y), std::max(box.maxX, x), std::max(box.maxY, y)};
+  }
+  return {box.minX - margin, box.minY - margin, box.maxX + margin, box.maxY + margin};
+}
+
+TEST_F(UpdateTest, ReplacingOneFaceChangesOnlyItsRegion) {
+  MeshData mesh = cube(2.0f, 4);
+  mesh.closedSolid = false;  // the replacement opens the box
+  Renderer* r = load(mesh);
+  ASSERT_NE(r, nullptr);
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage before = shot(*r, camera);
+
+  // The top face becomes a smaller square in its middle (new vertices, a different index count).
+  std::vector<MeshVertex> inset;
+  for (float x : {-0.5f, 0.5f}) {
+    for (float y : {-0.5f, 0.5f}) inset.push_back({{x, y, 1.0f}, {0, 0, 1}});
+  }
+  std::uint32_t base = scene.appendVertices(inset.data(), inset.size());
+  std::vector<std::uint32_t> indices = {base, base + 1, base + 3, base, base + 3, base + 2};
+  ASSERT_TRUE(scene.setFaceIndices(FaceId{kTopFace}, indices.data(), indices.size()).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  RgbaImage after = shot(*r, camera);
+  saveOutput(before, "update_before");
+  saveOutput(after, "update_after");
+
+  // The old top face's outline bounds every changed pixel (1.5 px for MSAA coverage at its rim).
+  std::vector<MeshVertex> oldTop;
+  for (std::uint32_t i : mesh.faces[kTopFace].indices) oldTop.push_back(mesh.vertices[i]);
+  PixelBox region = project(camera, r->aspect(), oldTop, 1.5f);
+  ImageDiff d = compareImages(before, after, 0);
+  EXPECT_GT(d.differing, 1000u) << "the replacement should be visible";
+  std::uint32_t outside = 0;
+  for (std::uint32_t y = 0; y < kSize; ++y) {
+    for (std::uint32_t x = 0; x < kSize; ++x) {
+      if (region.contains(x, y)) continue;
+      if (std::memcmp(before.at(x, y), after.at(x, y), 4) != 0) ++outside;
+    }
+  }
+  EXPECT_EQ(outside, 0u) << "pixels changed outside the replaced face's region";
+}
+
+TEST_F(UpdateTest, LargeUploadSpreadsOverFramesAndNeverShowsHalfAFace) {
+  MeshData mesh = sphere(1.0f, 48);  // 8 faces, ~1.3 MB of vertices and indices
+  std::uint64_t trianglesPerFace = mesh.faces[0].indices.size() / 3;
+  for (const MeshFace& f : mesh.faces) ASSERT_EQ(f.indices.size() / 3, trianglesPerFace);
+
+  RendererOptions small;
+  small.uploadBudgetBytes = 64u << 10;
+  Renderer* r = load(mesh, small);
+  ASSERT_NE(r, nullptr);
+  Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
+  std::uint64_t total = r->scene().pendingBytes();
+  int frames = 0;
+  while (r->scene().uploadsPending()) {
+    auto status = r->drawFrame(camera);
+    ASSERT_TRUE(status.ok()) << status.error().message;
+    const UploadStats& stats = r->lastUploadStats();
+    EXPECT_LE(stats.bytes, small.uploadBudgetBytes);
+    EXPECT_EQ(r->committedTriangles() % trianglesPerFace, 0u) << "half a face is drawn";
+    ASSERT_LT(++frames, 200) << "uploads do not finish";
+  }
+  EXPECT_GE(std::uint64_t(frames), total / small.uploadBudgetBytes)
+      << total << " bytes in " << frames << " frames";
+  EXPECT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
+  RgbaImage streamed = shot(*r, camera);
+
+  Renderer* whole = load(mesh);
+  ASSERT_NE(whole, nullptr);
+  ASSERT_TRUE(whole->finishUploads().ok());
+  EXPECT_EQ(whole->lastUploadStats().workLeft, false);
+  RgbaImage direct = shot(*whole, camera);
+  EXPECT_EQ(compareImages(streamed, direct, 0).differing, 0u);
+}
+
+TEST_F(UpdateTest, FacesSwitchOnlyWhenCompletelyUploaded) {
+  MeshData mesh = sphere(1.0f, 40);
+  std::uint64_t trianglesPerFace = mesh.faces[0].indices.size() / 3;
+  RendererOptions small;
+  small.uploadBudgetBytes = 64u << 10;
+  Renderer* r = load(mesh, small);
+  ASSERT_NE(r, nullptr);
+  Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
+  ASSERT_TRUE(r->finishUploads().ok());
+  ASSERT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
+
+  // Replace one face by a far larger array (finer level): while it streams in, the old face
+  // stays on screen unchanged; when done, the image is the fine one.
+  RgbaImage coarse = shot(*r, camera);
+  MeshData fine = sphere(1.0f, 160);
+  std::vector<std::uint32_t> indices = fine.faces[1].indices;
+  std::uint32_t first = *std::min_element(indices.begin(), indices.end());
+  std::uint32_t last = *std::max_element(indices.begin(), indices.end());
+  std::uint32_t base = r->scene().appendVertices(&fine.vertices[first], last - first + 1);
+  for (std::uint32_t& i : indices) i = i - first + base;
+  ASSERT_GT(indices.size() * 4, small.uploadBudgetBytes * 4);
+  ASSERT_TRUE(r->scene().setFaceIndices(FaceId{1}, indices.data(), indices.size()).ok());
+  int waiting = 0;
+  for (;;) {
+    RgbaImage frame = shot(*r, camera);
+    if (r->lastUploadStats().facesCompleted > 0) break;
+    ASSERT_EQ(compareImages(frame, coarse, 0).differing, 0u)
+        << "frame " << waiting << " shows a partial face";
+    ASSERT_EQ(r->committedTriangles(), trianglesPerFace * mesh.faces.size());
+    ASSERT_LT(++waiting, 400);
+  }
+  EXPECT_GT(waiting, 3);
+  ASSERT_TRUE(r->finishUploads().ok());
+  EXPECT_GT(compareImages(shot(*r, camera), coarse, 0).differing, 0u);
+}
+
+TEST_F(UpdateTest, BuffersGrowFromTinyCapacities) {
+  MeshData mesh = lattice(7, 1.0f, 6);  // 343 faces: more than the initial table size
+  append(mesh, sphere(2.0f, 24, glm::vec3(0.0f, 0.0f, 6.0f)));
+  RendererOptions tiny;
+  tiny.scene.initialVertexCapacity = 64;
+  tiny.scene.initialIndexCapacity = 192;
+  tiny.scene.initialEdgePointCapacity = 64;
+  Renderer* r = load(mesh, tiny);
+  ASSERT_NE(r, nullptr);
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
+  RgbaImage grown = shot(*r, camera);
+
+  Renderer* roomy = load(mesh);
+  ASSERT_NE(roomy, nullptr);
+  ASSERT_TRUE(roomy->finishUploads().ok());
+  EXPECT_EQ(compareImages(grown, shot(*roomy, camera), 0).differing, 0u);
+}
+
+TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
+  MeshData mesh = sphere(1.0f, 16);
+  RendererOptions direct;
+  direct.scene.indirectDraws = false;
+  direct.msaaSamples = 4;  // as the golden
+  Renderer* r = load(mesh, direct);
+  ASSERT_NE(r, nullptr);
+  EXPECT_FALSE(r->lastUploadStats().workLeft);
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
+  expectMatchesGolden(shot(*r, camera), "sphere_shaded_edges");
+}
+
+TEST_F(UpdateTest, HidingRecolouringAndClearing) {
+  RendererOptions msaa4;
+  msaa4.msaaSamples = 4;  // the end compares with a golden
+  MeshData box = cube(2.0f, 4);
+  box.closedSolid = false;  // hiding a face opens the box
+  Renderer* r = load(box, msaa4);
+  ASSERT_NE(r, nullptr);
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage original = shot(*r, camera);
+
+  ASSERT_TRUE(scene.setFaceVisible(FaceId{kTopFace}, false).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  RgbaImage hidden = shot(*r, camera);
+  EXPECT_GT(compareImages(original, hidden, 0).differing, 1000u);
+
+  ASSERT_TRUE(scene.setFaceVisible(FaceId{kTopFace}, true).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  EXPECT_EQ(compareImages(original, shot(*r, camera), 0).differing, 0u);
+
+  ASSERT_TRUE(scene.setFaceColor(FaceId{kTopFace}, Color8{20, 200, 40, 255}).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  RgbaImage green = shot(*r, camera);
+  // The top face's centre is now green.
+  glm::mat4 m = projectionMatrix(camera, r->aspect()) * viewMatrix(camera);
+  glm::vec4 c = m * glm::vec4(0, 0, 1, 1);
+  auto x = static_cast<std::uint32_t>((c.x / c.w * 0.5f + 0.5f) * kSize);
+  auto y = static_cast<std::uint32_t>((c.y / c.w * 0.5f + 0.5f) * kSize);
+  const std::uint8_t* p = green.at(x, y);
+  EXPECT_GT(p[1], p[0] + 60);
+  EXPECT_GT(p[1], p[2] + 60);
+
+  // Clear and load something else into the same renderer.
+  scene.clear();
+  auto part = addMesh(scene, sphere(1.0f, 16));
+  ASSERT_TRUE(part.ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera sphereCamera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  expectMatchesGolden(shot(*r, sphereCamera), "sphere_shaded_edges");
+}
+
+TEST_F(UpdateTest, ClosedSolidsLookTheSameWithBackFacesCulled) {
+  // Also checks that the test meshes keep their promise: counter-clockwise seen from outside.
+  MeshData closed = sphere(1.0f, 16);
+  append(closed, cube(1.0f, 3, glm::vec3(1.2f, -1.0f, 0.2f)));
+  ASSERT_TRUE(closed.closedSolid);
+  MeshData open = closed;
+  open.closedSolid = false;
+  glm::mat4 mirror(1.0f);
+  mirror[0][0] = -1.0f;
+
+  Renderer* r = load(closed);
+  ASSERT_NE(r, nullptr);
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage culled = shot(*r, camera);
+  saveOutput(culled, "closed_culled");
+  // Mirrored instances of a closed part are drawn two-sided, so they do not turn inside out.
+  ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
+  RgbaImage culledMirror = shot(*r, camera);
+
+  scene.clear();
+  ASSERT_TRUE(addMesh(scene, open).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  EXPECT_LE(compareImages(culled, shot(*r, camera), 2).differing, 20u);
+  ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
+  EXPECT_LE(compareImages(culledMirror, shot(*r, camera), 2).differing, 20u);
+}
+
+TEST_F(UpdateTest, OverlayDrawsInsideTheRenderPassOfRenderedFrames) {
+  Renderer* r = load(cube());
+  ASSERT_NE(r, nullptr);
+  ASSERT_NE(r->renderPass(), VK_NULL_HANDLE);
+  int calls = 0;
+  // What the viewer's ImGui pass will do, reduced to a clear of a corner rectangle: only valid
+  // inside a render pass, and visible in the capture.
+  r->setOverlay([&calls](VkCommandBuffer cmd) {
+    ++calls;
+    VkClearAttachment clear{};
+    clear.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    clear.colorAttachment = 0;
+    clear.clearValue.color = {{1.0f, 0.0f, 1.0f, 1.0f}};
+    VkClearRect rect{{{8, 8}, {32, 16}}, 0, 1};
+    vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
+  });
+  ASSERT_TRUE(r->finishUploads().ok());  // upload-only frames: no render pass, no overlay
+  EXPECT_EQ(calls, 0);
+  RgbaImage image = shot(*r, standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+  EXPECT_EQ(calls, 1);
+  const std::uint8_t* inside = image.at(20, 12);
+  EXPECT_EQ(inside[0], 255);
+  EXPECT_EQ(inside[1], 0);
+  EXPECT_EQ(inside[2], 255);
+  EXPECT_NE(image.at(60, 12)[1], 0);  // the background beside it
+  r->setOverlay({});
+  RgbaImage plain = shot(*r, standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+  EXPECT_EQ(calls, 1);
+  EXPECT_NE(plain.at(20, 12)[1], 0);
+}
+
+TEST_F(UpdateTest, RenderMeshToPngWritesTheSameImage) {
+  RenderOptions options;
+  options.width = kSize;
+  options.height = kSize;
+  options.validation = true;
+  if (const char* name = std::getenv("CETVIEW_TEST_DEVICE")) options.deviceName = name;
+  std::string path = std::string(CETVIEW_TEST_OUTPUT_DIR) + "/render_mesh_to_png.png";
+  Status written = renderMeshToPng(cube(), options, path);
+  ASSERT_TRUE(written.ok()) << written.error().message;
+  auto image = readPng(path);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  expectMatchesGolden(*image, "cube_shaded_edges");
+
+  Status bad = renderMeshToPng(cube(), options, "/nonexistent-dir/x.png");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().code, ErrorCode::kIo);
+}
+
+}  // namespace
+}  // namespace cetview::test

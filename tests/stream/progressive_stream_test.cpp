@@ -1,0 +1,163 @@
+// The progressive stream on the demo part: level-major completion, a consumer mirror equal to the
+// tessellator's own meshes, and a stress run of random tolerance changes and cancellations that
+// must end in the same mesh as a clean run (run under -DCETVIEW_SANITIZE=thread for races).
+#include "stream/progressive_stream.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <map>
+#include <random>
+#include <thread>
+
+#include "brep/model.h"
+#include "stream/stream_consumer.h"
+
+namespace cetview::stream {
+namespace {
+
+// A MeshSink that keeps what a renderer would: one vertex array, one index array per face.
+struct RecordingSink : MeshSink {
+  std::vector<StreamVertex> vertices;
+  std::map<std::uint32_t, std::vector<std::uint32_t>> faces;
+  std::size_t replacements = 0;
+  std::map<std::uint32_t, std::vector<float>> edges;
+  std::uint32_t appendVertices(const StreamVertex* v, std::size_t count) override {
+    const auto first = static_cast<std::uint32_t>(vertices.size());
+    vertices.insert(vertices.end(), v, v + count);
+    return first;
+  }
+  void setFaceIndices(std::uint32_t face, const std::uint32_t* idx, std::size_t count) override {
+    for (std::size_t i = 0; i < count; ++i) EXPECT_LT(idx[i], vertices.size());
+    faces[face].assign(idx, idx + count);
+    ++replacements;
+  }
+  void setEdgePolyline(std::uint32_t edge, const float* xyz, std::size_t count) override {
+    edges[edge].assign(xyz, xyz + 3 * count);
+  }
+  // Face f's triangles as position triples, for comparison across runs.
+  std::vector<float> trianglePositions(std::uint32_t f) const {
+    std::vector<float> out;
+    const auto it = faces.find(f);
+    if (it == faces.end()) return out;
+    for (std::uint32_t i : it->second) out.insert(out.end(), vertices[i].position, vertices[i].position + 3);
+    return out;
+  }
+};
+
+struct Demo {
+  std::unique_ptr<brep::Model> model;
+  std::unique_ptr<brep::Tessellator> tess;
+  Demo() {
+    auto loaded = brep::loadModel("demo");
+    EXPECT_TRUE(loaded) << loaded.error;
+    model = std::move(loaded.model);
+    brep::MeshParams params;
+    params.chordal.value = 0.002;  // 0.2%: a few levels, quick even under sanitizers
+    auto created = brep::Tessellator::create(*model, params);
+    EXPECT_TRUE(created.tessellator) << created.error;
+    tess = std::move(created.tessellator);
+  }
+};
+
+// Polls until the consumer has level `level` complete (or a generous time limit passes).
+bool pollUntil(StreamConsumer& consumer, RecordingSink& sink, int level) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (consumer.completeLevel() < level) {
+    if (consumer.poll(1 << 20, sink) == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (std::chrono::steady_clock::now() > deadline) return false;
+  }
+  return true;
+}
+
+TEST(ProgressiveStream, LevelsCompleteInOrderAndMirrorTheTessellator) {
+  Demo demo;
+  const int last = demo.tess->lastLevel();
+  ASSERT_GE(last, 1) << "the demo must have more than one level";
+  ProgressiveStream stream(*demo.tess, last, StreamOptions{2, 1 << 16});  // small rings: back-pressure
+  StreamConsumer consumer(stream, demo.model->faces().size());
+  RecordingSink sink;
+  ASSERT_TRUE(pollUntil(consumer, sink, last));
+  const auto& stats = consumer.levelStats();
+  ASSERT_EQ(static_cast<int>(stats.size()), last + 1);
+  for (int k = 0; k <= last; ++k) {
+    EXPECT_EQ(stats[static_cast<std::size_t>(k)].level, k);
+    if (k > 0) {
+      EXPECT_GE(stats[static_cast<std::size_t>(k)].ms, stats[static_cast<std::size_t>(k) - 1].ms);
+      EXPECT_LT(stats[static_cast<std::size_t>(k)].chordal, stats[static_cast<std::size_t>(k) - 1].chordal);
+    }
+  }
+  EXPECT_EQ(consumer.shownTriangles(), demo.tess->triangleCount(last));
+  // Every non-degenerate edge shows its final polyline.
+  std::vector<float> xyz;
+  std::size_t polylines = 0;
+  for (std::uint32_t e = 0; e < demo.model->edgeCount(); ++e) {
+    demo.tess->edgePolyline(e, last, xyz);
+    if (xyz.empty()) continue;
+    ++polylines;
+    EXPECT_EQ(sink.edges[e], xyz) << "edge " << e;
+  }
+  EXPECT_GT(polylines, 20u);
+  // Every face shows exactly the tessellator's final triangles, vertex for vertex.
+  for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) {
+    const brep::FaceMesh& mesh = demo.tess->faceMesh(f);
+    const auto& expected = mesh.levels.back();
+    const auto got = sink.trianglePositions(f);
+    ASSERT_EQ(got.size(), expected.size() * 3) << "face " << f;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(got[3 * i + static_cast<std::size_t>(c)],
+                  static_cast<float>(mesh.positions[3 * expected[i] + static_cast<std::uint32_t>(c)]));
+      }
+    }
+  }
+  // Coarser is instant: stored levels, no waiting.
+  consumer.setShowLevel(0, sink);
+  EXPECT_EQ(consumer.shownTriangles(), stats[0].triangles);
+}
+
+TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) {
+  std::vector<std::vector<float>> clean;
+  int last = 0;
+  {
+    Demo demo;
+    last = demo.tess->lastLevel();
+    ProgressiveStream stream(*demo.tess, last, StreamOptions{2, 1 << 20});
+    StreamConsumer consumer(stream, demo.model->faces().size());
+    RecordingSink sink;
+    ASSERT_TRUE(pollUntil(consumer, sink, last));
+    for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) clean.push_back(sink.trianglePositions(f));
+  }
+  Demo demo;
+  ProgressiveStream stream(*demo.tess, 0, StreamOptions{2, 1 << 14});
+  StreamConsumer consumer(stream, demo.model->faces().size());
+  RecordingSink sink;
+  std::mt19937 rng(2026);
+  for (int change = 0; change < 300; ++change) {
+    const int level = static_cast<int>(rng() % static_cast<unsigned>(last + 1));
+    stream.setTargetLevel(level);
+    consumer.setShowLevel(level, sink);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(rng() % 3000);
+    while (std::chrono::steady_clock::now() < until) consumer.poll(1 << 16, sink);
+  }
+  stream.setTargetLevel(last);
+  consumer.setShowLevel(last, sink);
+  ASSERT_TRUE(pollUntil(consumer, sink, last));
+  for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) {
+    EXPECT_EQ(sink.trianglePositions(f), clean[f]) << "face " << f << " differs from the clean run";
+  }
+}
+
+TEST(ProgressiveStream, DestroyingMidLevelReturnsPromptly) {
+  Demo demo;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    ProgressiveStream stream(*demo.tess, demo.tess->lastLevel(), StreamOptions{2, 1 << 12});
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // nobody reads: the rings fill up
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 30.0) << "cancellation must not wait for the whole model";
+}
+
+}  // namespace
+}  // namespace cetview::stream

@@ -1,0 +1,212 @@
+// `cetview view` in a real window: each test runs the executable under xvfb-run (its own X server,
+// lavapipe or any Vulkan device) with the validation layer on (--validate: any report fails the
+// run), drives it by --script, and checks the --screenshot by pixel: the model is drawn over the
+// background gradient and ImGui's panels are where the viewer puts them. Skipped without xvfb-run.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "engine/image.h"
+
+namespace cetview::test {
+namespace {
+
+bool onPath(const char* program) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    std::size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    if (access((dirs.substr(start, end - start) + "/" + program).c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+std::string outputPath(const std::string& name) {
+  mkdir(CETVIEW_TEST_OUTPUT_DIR, 0755);
+  return std::string(CETVIEW_TEST_OUTPUT_DIR) + "/" + name;
+}
+
+std::string writeScript(const std::string& name, const std::string& text) {
+  const std::string path = outputPath(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Runs `cetview ARGS` in a fresh X server; returns the exit code, with stdout+stderr in `log`.
+int runViewer(const std::string& args, std::string& log) {
+  const std::string logPath =
+      outputPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
+  const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) + " " +
+                              args + " > " + logPath + " 2>&1";
+  int code = -1;
+  // xvfb-run -a can race another test's server for a display number: try again then.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const int status = std::system(command.c_str());
+    std::ifstream in(logPath);
+    log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (log.find("xvfb-run: error") == std::string::npos &&
+        log.find("Server is already active") == std::string::npos)
+      break;
+  }
+  return code;
+}
+
+struct Pixel {
+  int r, g, b;
+};
+Pixel at(const engine::RgbaImage& image, std::uint32_t x, std::uint32_t y) {
+  const std::uint8_t* p = &image.pixels[(std::size_t{y} * image.width + x) * 4];
+  return {p[0], p[1], p[2]};
+}
+int difference(Pixel a, Pixel b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+}
+
+// ImGui's dark theme: panel bodies and the menu bar are near black over the light background.
+bool imguiDark(Pixel p) {
+  return p.r < 70 && p.g < 70 && p.b < 80;
+}
+
+// Fraction of the centre region (between the side panels) whose pixels differ from the background
+// gradient; the gradient is vertical, so column x = width - 3 (right of every panel) is the
+// background of each row.
+double modelCoverage(const engine::RgbaImage& image, int* coloured = nullptr) {
+  std::size_t differ = 0, total = 0;
+  if (coloured) *coloured = 0;
+  for (std::uint32_t y = 60; y < image.height - 60; y += 2) {
+    const Pixel background = at(image, image.width - 3, y);
+    for (std::uint32_t x = 330; x < image.width - 330; x += 2) {
+      const Pixel p = at(image, x, y);
+      ++total;
+      if (difference(p, background) > 24) ++differ;
+      if (coloured && std::abs(p.r - p.b) > 60) ++*coloured;
+    }
+  }
+  return static_cast<double>(differ) / static_cast<double>(total);
+}
+
+// A number from the viewer's closing JSON line: {"frames":..,"target_level":..,...}.
+long long jsonNumber(const std::string& log, const std::string& key) {
+  const std::size_t at = log.rfind("\"" + key + "\":");
+  if (at == std::string::npos) return -1;
+  return std::atoll(log.c_str() + at + key.size() + 3);
+}
+
+// After `wait level target`, every face shows the target level: the triangles shown are the level's.
+void expectWholeLevelShown(const std::string& log) {
+  EXPECT_GE(jsonNumber(log, "complete_level"), jsonNumber(log, "target_level")) << log;
+  EXPECT_GT(jsonNumber(log, "level_triangles"), 0) << log;
+  EXPECT_EQ(jsonNumber(log, "shown_triangles"), jsonNumber(log, "level_triangles")) << log;
+}
+
+class ViewerWindowTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!onPath("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb, xauth)";
+  }
+};
+
+TEST_F(ViewerWindowTest, DemoWithPanelsSliderMovesAndIsValidationClean) {
+  const std::string script = writeScript("demo.script",
+                                         "wait level target\n"
+                                         "deflection 0.5%\n"
+                                         "wait level target\n"
+                                         "deflection 0.05%\n"
+                                         "wait level target\n"
+                                         "quit\n");
+  const std::string shot = outputPath("demo.png");
+  std::remove(shot.c_str());
+  std::string log;
+  const int rc = runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " +
+                               script + " --screenshot " + shot,
+                           log);
+  ASSERT_EQ(rc, 0) << log;
+  expectWholeLevelShown(log);
+  EXPECT_EQ(jsonNumber(log, "target_level"), 5) << log;  // 0.05% of the demo's diagonal
+  auto image = engine::readPng(shot);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  ASSERT_EQ(image->width, 960u);
+  ASSERT_EQ(image->height, 600u);
+  EXPECT_GT(modelCoverage(*image), 0.15);
+  // Menu bar, Tessellation panel (left), Display panel (right), Stats panel (bottom left).
+  EXPECT_TRUE(imguiDark(at(*image, 500, 8)));
+  EXPECT_TRUE(imguiDark(at(*image, 250, 190)));
+  EXPECT_TRUE(imguiDark(at(*image, 920, 215)));
+  EXPECT_TRUE(imguiDark(at(*image, 250, 585)));
+  // The background's light gradient where no panel is.
+  const Pixel corner = at(*image, 957, 590);
+  EXPECT_GT(corner.r + corner.g + corner.b, 3 * 120);
+}
+
+TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
+  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/bottle.brep";
+  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string script = writeScript("bottle.script",
+                                         "wait level target\n"
+                                         "deflection 0.3%\n"
+                                         "heatmap on\n"
+                                         "wait level target\n"
+                                         "view front\n"
+                                         "orbit 30 -20\n"
+                                         "display shaded\n"
+                                         "projection orthographic\n"
+                                         "panel progress off\n"
+                                         "wait frames 2\n"
+                                         "quit\n");
+  const std::string shot = outputPath("bottle.png");
+  std::remove(shot.c_str());
+  std::string log;
+  const int rc = runViewer(model + " --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
+                               " --screenshot " + shot,
+                           log);  // no `view`: the default subcommand
+  ASSERT_EQ(rc, 0) << log;
+  expectWholeLevelShown(log);
+  auto image = engine::readPng(shot);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  int coloured = 0;
+  EXPECT_GT(modelCoverage(*image, &coloured), 0.15);
+  EXPECT_GT(coloured, 1000);                      // heat-map colours, not the file's grey
+  EXPECT_TRUE(imguiDark(at(*image, 250, 190)));   // Tessellation panel
+  EXPECT_FALSE(imguiDark(at(*image, 150, 300)));  // where the Progress panel was
+}
+
+TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
+  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Pump_Nut.brep";
+  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string script = writeScript("open.script",
+                                         "wait level 0\n"
+                                         "open " +
+                                             model +
+                                             "\n"
+                                             "open /nonexistent/model.step\n"  // reported, the viewer goes on
+                                             "wait level target\n"
+                                             "quit\n");
+  std::string log;
+  ASSERT_EQ(runViewer("--size 640x400 --frames 3000 --threads 2 --script " + script, log), 0) << log;
+  EXPECT_NE(log.find("opened: demo"), std::string::npos) << log;
+  EXPECT_NE(log.find("opened: " + model), std::string::npos) << log;
+  EXPECT_NE(log.find("/nonexistent/model.step"), std::string::npos) << log;
+}
+
+TEST_F(ViewerWindowTest, BadInputIsExitCode2) {
+  std::string log;
+  EXPECT_EQ(runViewer("view /nonexistent/model.step --frames 2", log), 2) << log;
+  const std::string script = writeScript("bad.script", "spin 3\n");
+  EXPECT_EQ(runViewer("--frames 2 --script " + script, log), 2) << log;
+  EXPECT_NE(log.find("unknown command 'spin'"), std::string::npos) << log;
+  EXPECT_EQ(runViewer("view --size 10x10", log), 2) << log;
+}
+
+}  // namespace
+}  // namespace cetview::test
