@@ -18,7 +18,7 @@ const Model& demo() {
 
 TEST(Demo, OnePercent) { test::tessellateAndCheck(demo(), test::relative(0.01)); }
 TEST(Demo, OneTenthPercent) { test::tessellateAndCheck(demo(), test::relative(0.001)); }
-TEST(Demo, OneHundredthPercent) { test::tessellateAndCheck(demo(), test::relative(0.0001), {true, false}); }
+TEST(Demo, OneHundredthPercent) { test::tessellateAndCheck(demo(), test::relative(0.0001), test::finalLevelOnly()); }
 TEST(Demo, Absolute) { test::tessellateAndCheck(demo(), test::absolute(0.05)); }
 TEST(Demo, CoarseAngle) { test::tessellateAndCheck(demo(), test::relative(0.002, 45)); }
 

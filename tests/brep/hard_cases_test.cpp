@@ -37,7 +37,7 @@ void checkAtSeveralDeflections(const TopoDS_Shape& shape, const std::string& nam
     test::tessellateAndCheck(*model, test::relative(d));
   }
   SCOPED_TRACE(name + " at an absolute deflection");
-  test::tessellateAndCheck(*model, test::absolute(model->bounds().diagonal() * 3e-4), {true, false});
+  test::tessellateAndCheck(*model, test::absolute(model->bounds().diagonal() * 3e-4), test::finalLevelOnly());
 }
 
 TEST(HardCases, SpherePoles) { checkAtSeveralDeflections(BRepPrimAPI_MakeSphere(10).Shape(), "sphere"); }

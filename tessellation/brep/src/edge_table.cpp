@@ -1,6 +1,6 @@
 // Edge discretisation by recursive subdivision with the two criteria of Laug & Borouchaki (2016,
 // "Discrete CAD model for visualization and meshing", section 2.1): proximity (chordal distance of
-// the curve to each segment, sampled at 1/4, 1/2, 3/4) and regularity (turn angle between the
+// the curve to each segment, sampled at every eighth) and regularity (turn angle between the
 // tangents at a segment's ends, and between each tangent and the chord), plus the turn of the surface
 // normals of each face along the segment. Level k subdivides the
 // segments of level k-1 that fail the tolerances of level k, so levels are nested.
@@ -20,6 +20,7 @@
 
 #include "model_impl.h"
 #include "parallel.h"
+#include "surface_eval.h"
 
 namespace cetview::brep {
 namespace {
@@ -49,15 +50,35 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
   for (FaceId f = 0; f < model.faceShapes.size(); ++f) {
     const TopoDS_Face face = TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD));
     const PartId part = model.faces[f].part;
+    double su = 1, sv = 1, u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    bool freeform = false;
+    try {
+      const SurfaceEval eval(face);
+      su = eval.su, sv = eval.sv, u0 = eval.uMin, u1 = eval.uMax, v0 = eval.vMin, v1 = eval.vMax;
+      const GeomAbs_SurfaceType type = eval.adaptor().GetType();
+      freeform = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere &&
+                 type != GeomAbs_Torus;
+    } catch (const Standard_Failure&) {
+      continue;  // no usable surface: the face falls back anyway
+    }
     for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
       const EdgeId e = model.edgeId(part, it.Current());
-      if (e == UINT32_MAX || info_[e].faces.size() >= 2) continue;
+      if (e == UINT32_MAX) continue;
+      // In a FORWARD face the material lies left of each pcurve in the edge's direction of use.
+      const int side = it.Current().Orientation() == TopAbs_REVERSED ? -1 : 1;
       bool known = false;
-      for (const FaceUse& use : info_[e].faces) known = known || use.face.IsSame(face);
-      if (known) continue;
+      for (FaceUse& use : info_[e].faces) {
+        if (!use.face.IsSame(face)) continue;
+        known = true;
+        if (use.side != side) use.side = 0;  // both orientations: a seam
+      }
+      if (known || info_[e].faces.size() >= 2) continue;
       FaceUse use;
       use.face = face;
-      use.pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, use.first, use.last);
+      use.side = side;
+      use.su = su, use.sv = sv, use.uMin = u0, use.uMax = u1, use.vMin = v0, use.vMax = v1;
+      use.freeform = freeform;
+      use.pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current().Oriented(TopAbs_FORWARD)), face, use.first, use.last);
       if (!use.pcurve.IsNull()) info_[e].faces.push_back(use);
     }
   }
@@ -140,6 +161,55 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
           n[k] = gp_Vec(0, 0, 0);
       }
     };
+    // How far a triangle of height h (in the face's scaled UV) standing on the segment's UV chord
+    // misses the tolerances: the larger of its centroid's sag over the chordal tolerance and its
+    // corners' normal spread over the angular one. The apex stays inside the face's parameter box.
+    auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, double height, int side) {
+      const FaceUse& use = info.faces[k];
+      auto param = [&](double t) {
+        return info.last == info.first ? use.first : use.first + (t - info.first) / (info.last - info.first) * (use.last - use.first);
+      };
+      const gp_Pnt2d a = use.pcurve->Value(param(ta)), b = use.pcurve->Value(param(tb));
+      const double dx = (b.X() - a.X()) * use.su, dy = (b.Y() - a.Y()) * use.sv;
+      const double len = std::hypot(dx, dy);
+      if (!(len > 0)) return 0.0;
+      const double h = height * len * side;
+      const double au = 0.5 * (a.X() + b.X()) - h * dy / len / use.su;
+      const double av = 0.5 * (a.Y() + b.Y()) + h * dx / len / use.sv;
+      // Outside the face's parameter box the face is narrower than the triangle: its width, not
+      // this segment, limits the triangles there.
+      if (au < use.uMin || au > use.uMax || av < use.vMin || av > use.vMax) return 0.0;
+      BRepAdaptor_Surface& s = surfaces[k];
+      gp_Pnt apex, c;
+      gp_Vec du, dv, dua, dva, dub, dvb;
+      s.D1(au, av, apex, du, dv);
+      const gp_Vec nApex = du.Crossed(dv);
+      s.D1((a.X() + b.X() + au) / 3, (a.Y() + b.Y() + av) / 3, c, du, dv);
+      const gp_Vec nc = du.Crossed(dv);
+      gp_Pnt tmpA, tmpB;
+      s.D1(a.X(), a.Y(), tmpA, dua, dva);
+      s.D1(b.X(), b.Y(), tmpB, dub, dvb);
+      const gp_Vec na = dua.Crossed(dva), nb = dub.Crossed(dvb);
+      double bad = 0;
+      if (nc.Magnitude() > 0) {
+        const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
+        bad = std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / tol.chordal;
+      }
+      const double spread = std::max(angleBetween(na, nApex), angleBetween(nb, nApex));
+      return std::max(bad, spread / tol.angleRad);
+    };
+    // Free-form faces only: analytic surfaces bend the same way next to the boundary as along it,
+    // which the normal criterion above already covers.
+    auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
+      for (std::size_t k = 0; k < uses; ++k) {
+        if (!info.faces[k].freeform) continue;
+        for (int side : {-1, 1}) {
+          if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
+          if (standing(k, ta, tb, pa, pb, 0.866, side) > 1.0) return true;
+        }
+      }
+      return false;
+    };
     auto pointAt = [&](std::size_t i, double t) {
       if (i == 0) return info.p0;
       if (i + 1 == seedT.size()) return info.p1;
@@ -174,7 +244,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         if (s.depth < kMaxDepth && s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb))) {
           const double chord = s.pa.Distance(s.pb);
           if (!info.straight) {
-            for (double f : {0.5, 0.25, 0.75}) {
+            for (double f : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875}) {
               if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > tol.chordal) {
                 split = true;
                 break;
@@ -187,6 +257,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
             }
           }
           for (std::size_t k = 0; k < uses && !split && chord > minSize; ++k) split = angleBetween(s.na[k], s.nb[k]) > tol.angleRad;
+          if (!split && chord > minSize) split = standingFails(s.ta, s.tb, s.pa, s.pb);
         }
         if (!split) {
           out.t.push_back(s.tb);

@@ -41,10 +41,16 @@ class EdgeTable {
   // A face that uses the edge: its pcurve lets the discretisation keep the surface normals along each
   // segment within the angular tolerance (no interior point can fix a boundary segment whose ends'
   // normals differ too much).
+  // The face also bounds how long a segment may be: a well-shaped triangle standing on it inside the
+  // face must be within the tolerances, or the interior refinement can only add slivers along it.
   struct FaceUse {
     TopoDS_Face face;  // FORWARD
     Handle(Geom2d_Curve) pcurve;
     double first = 0, last = 0;  // pcurve range
+    int side = 1;                // the face lies left (+1) or right (-1) of the pcurve, or both (0: seam)
+    double su = 1, sv = 1;       // the face's UV scaling (SurfaceEval)
+    double uMin = 0, uMax = 0, vMin = 0, vMax = 0;
+    bool freeform = false;       // B-spline, Bezier, offset, swept: bends unpredictably near the edge
   };
   struct Info {
     double first = 0, last = 0;

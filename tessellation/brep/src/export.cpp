@@ -103,7 +103,9 @@ std::string exportModel(const Tessellator& t, const std::string& path) {
       RWObj_CafWriter writer(path.c_str());
       TColStd_IndexedDataMapOfStringString info;
       info.Add("Generator", "cetview");
-      ok = writer.Perform(documentFor(m), info, Message_ProgressRange());
+      const Handle(TDocStd_Document) doc = documentFor(m);
+      ok = writer.Perform(doc, info, Message_ProgressRange());
+      if (doc != m.doc) XCAFApp_Application::GetApplication()->Close(doc);
     } else {
       RWGltf_CafWriter writer(path.c_str(), ext == "glb");
       // Model units are millimetres (STEP and IGES are read in mm); glTF is in metres, Y up.
@@ -111,7 +113,9 @@ std::string exportModel(const Tessellator& t, const std::string& path) {
       writer.ChangeCoordinateSystemConverter().SetInputCoordinateSystem(RWMesh_CoordinateSystem_Zup);
       TColStd_IndexedDataMapOfStringString info;
       info.Add("Generator", "cetview");
-      ok = writer.Perform(documentFor(m), info, Message_ProgressRange());
+      const Handle(TDocStd_Document) doc = documentFor(m);
+      ok = writer.Perform(doc, info, Message_ProgressRange());
+      if (doc != m.doc) XCAFApp_Application::GetApplication()->Close(doc);
     }
     if (!ok) return path + ": cannot be written";
   } catch (const Standard_Failure& e) {

@@ -3,11 +3,16 @@
 // Sources: Yang & Choi (2010) for the CET arrays and the sequential constrained Delaunay insertion;
 // Eryar, "Delaunay surface visualization", for faces as constrained triangulations of their trimming
 // loops in UV with holes removed by orientation; Laug & Borouchaki (2016) for the proximity and
-// regularity criteria, applied here to triangles: a triangle is split where the exact surface
-// deviates from it by more than the level's chordal tolerance (sampled at the centroid and the
-// midpoints of unconstrained edges, each sample projected onto the surface), where the surface
-// normals at its corners differ by more than the angular tolerance, or where it faces against the
-// surface normals.
+// regularity criteria, applied here to triangles. A triangle is split
+//  - where the exact surface deviates from it by more than the level's chordal tolerance: samples
+//    of the flat triangle (centroid and free-edge midpoints; a barycentric grid on doubly curved
+//    surfaces) projected onto the surface; the corresponding-point distance |S(uv) - M| guards
+//    coverage (a triangle whose UV region maps far from it, across a seam or a pole, is split too);
+//  - where the surface normals at its corners differ by more than the angular tolerance;
+//  - where it is flipped or nearly edge-on against its corners' normals (split on its longest edge).
+// Points go in batches, one per neighbourhood per pass (an independent set), and never closer to a
+// boundary chord than the surface bulges under it (see buildChords): Delaunay keeps the closest apex
+// on a constrained edge, so a point there would leave a flipped triangle for good.
 #include "face_mesher.h"
 
 #include <algorithm>
@@ -42,8 +47,9 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings)
     : topology_(std::move(topology)), settings_(settings), eval_(topology_.face) {
   const GeomAbs_SurfaceType type = eval_.adaptor().GetType();
-  freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere &&
-              type != GeomAbs_Torus;
+  // Ruled surfaces (planes, cylinders, cones) deviate from a triangle as a quadratic whose maximum
+  // the centroid and edge midpoints catch; doubly curved ones can peak elsewhere in big triangles.
+  freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone;
   for (const std::string& r : topology_.repairs) repairs_.push_back(r);
   repaired_ = !repairs_.empty();
 }
@@ -316,9 +322,15 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   }
   r = TriangleRecord{};
   r.a = v[0], r.b = v[1], r.c = v[2];
-  const bool collapsed = P[0].IsEqual(P[1], 0) || P[1].IsEqual(P[2], 0) || P[0].IsEqual(P[2], 0);
-  double longest = 0;
-  for (int i = 0; i < 3; ++i) longest = std::max(longest, P[i].Distance(P[(i + 1) % 3]));
+  const double c = settings_.coincident;
+  const bool collapsed = P[0].IsEqual(P[1], c) || P[1].IsEqual(P[2], c) || P[0].IsEqual(P[2], c);
+  double longest = 0, longestFree = 0;
+  r.longestFreeEdge = 3;
+  for (int i = 0; i < 3; ++i) {
+    const double len = P[(i + 1) % 3].Distance(P[(i + 2) % 3]);  // edge i, opposite corner i
+    longest = std::max(longest, len);
+    if (!m.isConstrained(t, i) && len > longestFree) longestFree = len, r.longestFreeEdge = static_cast<std::uint8_t>(i);
+  }
   r.longest = static_cast<float>(longest);
 
   // Chordal: samples of the flat triangle projected onto the surface. The corresponding-point
@@ -331,7 +343,8 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     double u = b0 * U[0] + b1 * U[1] + b2 * U[2], w = b0 * V[0] + b1 * V[1] + b2 * V[2];
     const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
     double corresponding = 0;
-    const double d = eval_.project(M, u, w, collapsed ? 0 : 3, &corresponding);
+    const double d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding);
+    if (collapsed) corresponding = d;
     if (d > worst) worst = d, r.worstSample = id;
     if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
   };
@@ -391,73 +404,134 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   }
 }
 
-bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const {
+// ---------------------------------------------------------------------------------------------
+// Boundary chords and their clearance. The surface under a chord's UV segment bulges away from the
+// 3D chord, by w within the tangent plane and by h along the normal (a chord of a curved boundary
+// sags below the surface); a point closer to the chord than that makes a flipped or folded triangle
+// on it, and no later point can repair it (Delaunay keeps the closest apex on a constrained edge).
+void FaceMesher::buildChords(const FaceMesh& mesh) {
+  chords_.clear();
+  chordGrid_.clear();
   const cet::CetMesh& m = cdt_->mesh();
-  auto vertexPos = [&](cet::VertexId id) {
+  auto pos = [&](cet::VertexId id) {
     const std::size_t o = base_ + id;
     return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
   };
-  // A boundary chord A -> B (domain on its left) and how far inside it a new point must lie: the
-  // surface under the chord's UV segment bulges away from the 3D chord, by w within the tangent plane
-  // and by h along the normal; a point closer than that makes a flipped or folded triangle.
-  struct Chord {
-    gp_Pnt a;
-    gp_Vec ab, n;
-    double clearance;
-  };
-  Chord chords[12];
-  int count = 0, own = -1;
-  auto addChord = [&](cet::TriangleId s, int i) {
-    const cet::VertexId a = m.vertex(s, (i + 1) % 3), b = m.vertex(s, (i + 2) % 3);
-    Chord c;
-    c.a = vertexPos(a);
-    c.ab = gp_Vec(c.a, vertexPos(b));
-    gp_Vec n(0, 0, 0);
-    if (!singular_[a]) n += gp_Vec(normal_[a]);
-    if (!singular_[b]) n += gp_Vec(normal_[b]);
-    const double len = c.ab.Magnitude();
-    if (n.Magnitude() == 0 || len == 0) return;
-    c.n = n.Normalized();
-    const std::size_t oa = base_ + a, ob = base_ + b;
-    const gp_Pnt under = eval_.point(0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]));
-    const gp_Vec inward = c.n.Crossed(c.ab / len);
-    const gp_Vec bulge(c.a.XYZ() + 0.5 * c.ab.XYZ(), under.XYZ());
-    const double w = bulge.Dot(inward), h = std::abs(bulge.Dot(c.n));
-    // Outward in the tangent plane: the point must clear the bulge. Along the normal (a chord of a
-    // curved boundary sags below the surface): the point must be far enough that the facet on the
-    // chord tilts by less than ~40 degrees.
-    c.clearance = (w < 0 ? -1.5 * w : 0.0) + 1.2 * h + 1e-3 * len;
-    chords[count++] = c;
-  };
-  for (int i = 0; i < 3; ++i) {
-    if (m.isConstrained(t, i)) {
-      own = i;
-      addChord(t, i);
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, lengthSum = 0;
+  const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
+  for (cet::TriangleId t = 0; t < triangles; ++t) {
+    if (m.isGhost(t) || m.isOutside(t)) continue;
+    for (int i = 0; i < 3; ++i) {
+      if (!m.isConstrained(t, i)) continue;
+      const cet::VertexId a = m.vertex(t, (i + 1) % 3), b = m.vertex(t, (i + 2) % 3);  // domain on the left
+      Chord c;
+      c.a = pos(a);
+      c.ab = gp_Vec(c.a, pos(b));
+      const double len = c.ab.Magnitude();
+      gp_Vec n(0, 0, 0);
+      if (!singular_[a]) n += gp_Vec(normal_[a]);
+      if (!singular_[b]) n += gp_Vec(normal_[b]);
+      if (n.Magnitude() == 0 || len == 0) continue;
+      c.n = n.Normalized();
+      c.pa = cdt_->point(a), c.pb = cdt_->point(b);
+      const std::size_t oa = base_ + a, ob = base_ + b;
+      const gp_Vec inward = c.n.Crossed(c.ab / len);
+      // Sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
+      double w = 0, h = 0;
+      for (double f : {0.25, 0.5, 0.75}) {
+        const gp_Pnt under = eval_.point((1 - f) * mesh.uv[2 * oa] + f * mesh.uv[2 * ob],
+                                         (1 - f) * mesh.uv[2 * oa + 1] + f * mesh.uv[2 * ob + 1]);
+        const gp_Vec bulge(c.a.XYZ() + f * c.ab.XYZ(), under.XYZ());
+        w = std::min(w, bulge.Dot(inward));
+        h = std::max(h, std::abs(bulge.Dot(c.n)));
+      }
+      // Outward in the tangent plane: clear the bulge. Along the normal: far enough that the facet
+      // on the chord tilts by less than ~40 degrees.
+      c.clearance = -1.5 * w + 1.2 * h + 1e-3 * len;
+      // The zone the clearance guards, in scaled UV (scaled lengths approximate 3D ones; x2 margin).
+      const double reach = 2.0 * c.clearance;
+      c.x0 = std::min(c.pa.x, c.pb.x) - reach, c.x1 = std::max(c.pa.x, c.pb.x) + reach;
+      c.y0 = std::min(c.pa.y, c.pb.y) - reach, c.y1 = std::max(c.pa.y, c.pb.y) + reach;
+      x0 = std::min(x0, c.x0), y0 = std::min(y0, c.y0), x1 = std::max(x1, c.x1), y1 = std::max(y1, c.y1);
+      lengthSum += std::hypot(c.pb.x - c.pa.x, c.pb.y - c.pa.y);
+      chords_.push_back(c);
     }
-    const cet::TriangleId n = m.neighbor(t, i);
-    if (n == cet::kNoTriangle || m.isGhost(n) || m.isOutside(n)) continue;
-    for (int j = 0; j < 3; ++j)
-      if (m.isConstrained(n, j)) addChord(n, j);
   }
-  if (count == 0) return true;
-  auto ok = [&](double uu, double vv) {
-    const gp_Pnt x = eval_.point(uu, vv);
-    for (int c = 0; c < count; ++c) {
-      const Chord& ch = chords[c];
-      if (ch.ab.Crossed(gp_Vec(ch.a, x)).Dot(ch.n) < ch.clearance * ch.ab.Magnitude()) return false;
+  if (chords_.empty()) return;
+  // A uniform grid of about one chord length per cell, at most 256 x 256.
+  const double cell = std::max(lengthSum / static_cast<double>(chords_.size()), 1e-300);
+  gridX0_ = x0, gridY0_ = y0;
+  gridNx_ = static_cast<int>(std::clamp((x1 - x0) / cell + 1, 1.0, 256.0));
+  gridNy_ = static_cast<int>(std::clamp((y1 - y0) / cell + 1, 1.0, 256.0));
+  gridCellX_ = std::max((x1 - x0) / gridNx_, 1e-300), gridCellY_ = std::max((y1 - y0) / gridNy_, 1e-300);
+  chordGrid_.assign(static_cast<std::size_t>(gridNx_ * gridNy_), {});
+  for (std::uint32_t k = 0; k < chords_.size(); ++k) {
+    const Chord& c = chords_[k];
+    const int i0 = std::clamp(static_cast<int>((c.x0 - gridX0_) / gridCellX_), 0, gridNx_ - 1);
+    const int i1 = std::clamp(static_cast<int>((c.x1 - gridX0_) / gridCellX_), 0, gridNx_ - 1);
+    const int j0 = std::clamp(static_cast<int>((c.y0 - gridY0_) / gridCellY_), 0, gridNy_ - 1);
+    const int j1 = std::clamp(static_cast<int>((c.y1 - gridY0_) / gridCellY_), 0, gridNy_ - 1);
+    for (int i = i0; i <= i1; ++i)
+      for (int j = j0; j <= j1; ++j) chordGrid_[static_cast<std::size_t>(j * gridNx_ + i)].push_back(k);
+  }
+}
+
+bool FaceMesher::clearOfChords(double u, double v) const {
+  if (chords_.empty()) return true;
+  const cet::Point2 q = scaled(u, v);
+  const int i = static_cast<int>((q.x - gridX0_) / gridCellX_), j = static_cast<int>((q.y - gridY0_) / gridCellY_);
+  if (i < 0 || j < 0 || i >= gridNx_ || j >= gridNy_) return true;
+  gp_Pnt x;
+  bool evaluated = false;
+  for (std::uint32_t k : chordGrid_[static_cast<std::size_t>(j * gridNx_ + i)]) {
+    const Chord& c = chords_[k];
+    if (q.x < c.x0 || q.x > c.x1 || q.y < c.y0 || q.y > c.y1) continue;
+    // Only points beside the chord (projecting within it, with a small overhang) are at risk.
+    const double ex = c.pb.x - c.pa.x, ey = c.pb.y - c.pa.y, e2 = ex * ex + ey * ey;
+    const double s = e2 > 0 ? ((q.x - c.pa.x) * ex + (q.y - c.pa.y) * ey) / e2 : 0.5;
+    if (s < -0.1 || s > 1.1) continue;
+    if (!evaluated) x = eval_.point(u, v), evaluated = true;
+    if (c.ab.Crossed(gp_Vec(c.a, x)).Dot(c.n) < c.clearance * c.ab.Magnitude()) return false;
+  }
+  return true;
+}
+
+bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const {
+  if (clearOfChords(u, v)) return true;
+  const cet::CetMesh& m = cdt_->mesh();
+  if (anyPoint) {
+    // A flipped triangle: any of its centroid and free-edge midpoints that keeps the clearance.
+    double cu[3], cv[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t o = base_ + m.vertex(t, i);
+      cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
     }
-    return true;
-  };
-  if (ok(u, v)) return true;
-  if (own < 0) return false;
-  // Slide from the chord's midpoint towards the opposite corner.
-  const std::size_t oa = base_ + m.vertex(t, (own + 1) % 3), ob = base_ + m.vertex(t, (own + 2) % 3), oc = base_ + m.vertex(t, own);
-  const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
-  for (double f : {0.5, 0.7}) {
-    const double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
-    if (ok(uu, vv)) {
-      u = uu, v = vv;
-      return true;
+    double tu[4] = {(cu[0] + cu[1] + cu[2]) / 3, 0, 0, 0}, tv[4] = {(cv[0] + cv[1] + cv[2]) / 3, 0, 0, 0};
+    int n = 1;
+    for (int i = 0; i < 3; ++i) {
+      if (m.isConstrained(t, i)) continue;
+      tu[n] = 0.5 * (cu[(i + 1) % 3] + cu[(i + 2) % 3]), tv[n] = 0.5 * (cv[(i + 1) % 3] + cv[(i + 2) % 3]);
+      ++n;
+    }
+    for (int i = 0; i < n; ++i) {
+      if (clearOfChords(tu[i], tv[i])) {
+        u = tu[i], v = tv[i];
+        return true;
+      }
+    }
+  }
+  // Slide from the midpoint of one of t's own boundary chords towards the opposite corner.
+  for (int own = 0; own < 3; ++own) {
+    if (!m.isConstrained(t, own)) continue;
+    const std::size_t oa = base_ + m.vertex(t, (own + 1) % 3), ob = base_ + m.vertex(t, (own + 2) % 3);
+    const std::size_t oc = base_ + m.vertex(t, own);
+    const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
+    for (double f : {0.5, 0.7}) {
+      const double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
+      if (clearOfChords(uu, vv)) {
+        u = uu, v = vv;
+        return true;
+      }
     }
   }
   return false;
@@ -466,9 +540,12 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
-  const double foldCos = std::cos(std::min(1.5 * level.angleRad, 80.0 * M_PI / 180.0));
+  // A facet more than 70 degrees off its corners' normals is nearly edge-on: a flip waiting to happen.
+  // (Long thin triangles on a curved surface tilt less; splitting them would only make more.)
+  const double foldCos = std::cos(70.0 * M_PI / 180.0);
   std::vector<gp_Pnt2d> uvs;
-  if (kDebugRefine) fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
+  if (kDebugRefine) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
+  buildChords(mesh);  // the boundary is fixed while the interior refines
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
     const int stamp = ++passStamp_;
@@ -494,7 +571,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       } else if (r->normalAngle > level.angleRad * (1 + 1e-6) && r->longest > minSize) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < foldCos) && r->longest > minSize) {
-        at = 0;  // flipped, or folded: the facet turns further from the surface than the corners' spread allows
+        // Flipped, or folded (the facet turns further from the surface than its corners' spread
+        // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
+        // thinner ones).
+        at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
       }
       if (at < 0) continue;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
@@ -503,9 +583,6 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       if (touched_[m.vertex(t, 0)] == stamp || touched_[m.vertex(t, 1)] == stamp || touched_[m.vertex(t, 2)] == stamp) {
         continue;
       }
-      if (kDebugRefine) { fprintf(stderr, "pass %d tri %u dev %g angle %g longest %g flags %d -> at %d", pass, t, r->deviation, r->normalAngle, r->longest, r->flags, at);
-        for (int i = 0; i < 3; ++i) { auto o = base_ + m.vertex(t, i); fprintf(stderr, " [%u %.5f %.5f n %.3f %.3f %.3f s%d]", m.vertex(t,i), mesh.uv[2*o], mesh.uv[2*o+1], normal_[m.vertex(t,i)].X(), normal_[m.vertex(t,i)].Y(), normal_[m.vertex(t,i)].Z(), singular_[m.vertex(t,i)]); }
-        fprintf(stderr, "\n"); }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
       double u = 0, v = 0;
@@ -513,13 +590,24 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         const std::size_t o = base_ + m.vertex(t, i);
         u += b[i] * mesh.uv[2 * o], v += b[i] * mesh.uv[2 * o + 1];
       }
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh)) {
+      // The chordal promise outranks the clearance (which only guards against folds): a triangle
+      // too far from the surface is split at its worst sample regardless.
+      const bool tooFar = r->deviation > chordal;
+      const bool flipped = (r->flags & TriangleRecord::kFlipped) || r->facetCos < 0;
+      // So does a flipped triangle larger than the tolerance (small faces at coarse levels, where a
+      // chord's clearance can cover the whole face): the overrides stop at that size, so they
+      // cannot cascade towards a boundary.
+      const bool override = tooFar || (flipped && r->longest > level.chordal);
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) {
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;
         cache_.insert(stuck);
         continue;
       }
-      if (kDebugRefine) fprintf(stderr, "  -> split at %.6f %.6f\n", u, v);
+      if (kDebugRefine) {
+        std::fprintf(stderr, "pass %d: triangle %u (deviation %g, angle %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
+                     pass, t, r->deviation, r->normalAngle, r->longest, r->flags, u, v);
+      }
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
       points_.push_back(scaled(u, v));
@@ -530,10 +618,6 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     outcomes_.assign(points_.size(), cet::InsertOutcome::kOutside);
     cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data());
     const auto countAfter = static_cast<cet::VertexId>(cdt_->vertexCount());
-    if (kDebugRefine) {
-      for (std::size_t i = 0; i < ids_.size(); ++i)
-        fprintf(stderr, "  outcome %d for %.6f %.6f\n", static_cast<int>(outcomes_[i]), uvs[i].X(), uvs[i].Y());
-    }
     if (countAfter == countBefore) return true;  // every request merged or rejected: nothing left to gain
     std::vector<std::uint32_t> inputOf(countAfter - countBefore, UINT32_MAX);
     for (std::size_t i = 0; i < ids_.size(); ++i)
@@ -557,13 +641,15 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   indices.reserve(cdt_->insideTriangleCount() * 3);
   const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
   auto same = [&](std::uint32_t a, std::uint32_t b) {
-    return mesh.positions[3 * a] == mesh.positions[3 * b] && mesh.positions[3 * a + 1] == mesh.positions[3 * b + 1] &&
-           mesh.positions[3 * a + 2] == mesh.positions[3 * b + 2];
+    const double* p = &mesh.positions[3 * a];
+    const double* q = &mesh.positions[3 * b];
+    const double c = settings_.coincident;
+    return std::abs(p[0] - q[0]) <= c && std::abs(p[1] - q[1]) <= c && std::abs(p[2] - q[2]) <= c;
   };
   for (cet::TriangleId t = 0; t < triangles; ++t) {
     if (m.isGhost(t) || m.isOutside(t)) continue;
     const std::uint32_t a = base_ + m.vertex(t, 0), b = base_ + m.vertex(t, 1), c = base_ + m.vertex(t, 2);
-    if (same(a, b) || same(b, c) || same(a, c)) continue;  // collapsed on a pole or a closed UV gap
+    if (same(a, b) || same(b, c) || same(a, c)) continue;  // collapsed on a pole, a singular row or a UV gap
     if (settings_.reversed) {
       indices.insert(indices.end(), {a, c, b});
     } else {
@@ -589,8 +675,30 @@ FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceR
   return fallbackStatus_;
 }
 
+// A coarse level whose boundary polygon crosses itself in UV (coarse chords of close loops can cross
+// where finer ones do not): that level shows the fallback mesh, and the next level starts afresh.
+FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report) {
+  cdt_.reset();
+  cache_.clear();
+  if (deferredIndices_.empty()) {
+    std::string failure;
+    if (!meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle, mesh,
+                              deferredIndices_, failure)) {
+      return useFallback(why + "; fallback failed too: " + failure, mesh, report);
+    }
+  }
+  repairs_.push_back("level " + std::to_string(k) + " shows the fallback mesh: " + why);
+  repaired_ = true;
+  mesh.levels.push_back(deferredIndices_);
+  mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
+  report.status = FaceStatus::kRepaired;
+  report.reason.clear();
+  for (const std::string& r : repairs_) report.reason += (report.reason.empty() ? "" : "; ") + r;
+  return report.status;
+}
+
 FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
-                               const std::atomic<bool>* cancel) {
+                               const std::atomic<bool>* cancel, bool finalLevel) {
   if (cancel && cancel->load(std::memory_order_relaxed)) return FaceStatus::kCancelled;
   if (fallback_) {
     // The fallback mesh is at the final tolerance: within every level's.
@@ -614,6 +722,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
         ok = buildDomain(k, edges, mesh, problem);
       }
     }
+    if (!ok && !finalLevel) return deferLevel(k, problem, mesh, report);
     if (!ok) return useFallback(problem, mesh, report);
     if (!refine(level, mesh, cancel)) return FaceStatus::kCancelled;
   } catch (const Standard_Failure& e) {

@@ -32,6 +32,9 @@ struct FaceMesherSettings {
   double finalChordal = 0;   // the fallback mesher's tolerance; UV gaps below a tenth of it close silently
   double finalAngle = 0;
   bool reversed = false;     // face orientation: normals and winding of the output flip
+  // Vertices closer than this are one point (poles, singular rows of a B-spline, bridged UV gaps):
+  // triangles with two of them have no area and are dropped from the output.
+  double coincident = 0;
 };
 
 class FaceMesher {
@@ -40,8 +43,9 @@ class FaceMesher {
 
   // Advances to level k (the previous level is k-1, or none). Appends the new vertices to `mesh` and
   // pushes level k's index array. Returns kCancelled (nothing pushed) when cancel is raised.
+  // A failure to build the domain on a coarse level (not `finalLevel`) defers CET to the next level.
   FaceStatus advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
-                     const std::atomic<bool>* cancel);
+                     const std::atomic<bool>* cancel, bool finalLevel);
 
  private:
   struct Occurrence {
@@ -58,6 +62,8 @@ class FaceMesher {
   // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
   std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
   FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report);
+  FaceStatus deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report);
+  std::vector<std::uint32_t> deferredIndices_;  // the fallback mesh shown by deferred coarse levels
 
   // Output bookkeeping: vertices the triangulator created since the last sync get their data.
   // Appends the output data of the next triangulator vertex: at (u, v), position p (an edge point)
@@ -69,7 +75,22 @@ class FaceMesher {
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
   // towards the opposite corner when needed; false when no safe point was found.
-  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh) const;
+  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const;
+  void buildChords(const FaceMesh& mesh);
+  bool clearOfChords(double u, double v) const;
+
+  // A boundary chord (a constrained edge, domain on its left) and the clearance points must keep.
+  struct Chord {
+    gp_Pnt a;
+    gp_Vec ab, n;
+    cet::Point2 pa, pb;  // scaled UV
+    double clearance = 0;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // guarded zone in scaled UV
+  };
+  std::vector<Chord> chords_;
+  std::vector<std::vector<std::uint32_t>> chordGrid_;  // chords by cell of a uniform scaled-UV grid
+  double gridX0_ = 0, gridY0_ = 0, gridCellX_ = 1, gridCellY_ = 1;
+  int gridNx_ = 0, gridNy_ = 0;
 
   FaceTopology topology_;
   FaceMesherSettings settings_;
@@ -83,7 +104,7 @@ class FaceMesher {
   bool repaired_ = false;
   std::vector<std::string> repairs_;
   bool fallback_ = false;
-  bool freeform_ = false;  // B-spline, Bezier, offset, swept...: sampled more densely
+  bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely
   FaceStatus fallbackStatus_ = FaceStatus::kFallback;
   int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
   // Scratch.

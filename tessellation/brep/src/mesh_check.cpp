@@ -79,9 +79,18 @@ bool coplanarIntersect(const V3 p[3], const V3 q[3], double eps) {
   return inside(p[0], q) || inside(q[0], p);
 }
 
-bool trianglesIntersect(const V3 p[3], const V3 q[3], double eps) {
+// How deep the triangle with plane distances d reaches through the plane: the smaller of its
+// reaches on the two sides.
+double depthOf(const double d[3]) {
+  double above = 0, below = 0;
+  for (int i = 0; i < 3; ++i) above = std::max(above, d[i]), below = std::max(below, -d[i]);
+  return std::min(above, below);
+}
+
+bool trianglesIntersect(const V3 p[3], const V3 q[3], double eps, double minDepth) {
   double dp[3], dq[3];
   if (!planeDistances(q, p, eps, dp) || !planeDistances(p, q, eps, dq)) return false;
+  if (minDepth > 0 && std::min(depthOf(dp), depthOf(dq)) <= minDepth) return false;  // both must straddle
   if ((dp[0] > 0 && dp[1] > 0 && dp[2] > 0) || (dp[0] < 0 && dp[1] < 0 && dp[2] < 0)) return false;
   if ((dq[0] > 0 && dq[1] > 0 && dq[2] > 0) || (dq[0] < 0 && dq[1] < 0 && dq[2] < 0)) return false;
   if (dp[0] == 0 && dp[1] == 0 && dp[2] == 0) return coplanarIntersect(p, q, eps);
@@ -121,14 +130,18 @@ TriangleSoup partSoup(const Tessellator& t, std::uint32_t part, int level) {
 std::vector<std::uint32_t> weldVertices(const std::vector<double>& positions, double tolerance) {
   const std::size_t n = positions.size() / 3;
   std::vector<std::uint32_t> rep(n);
-  const double cell = std::max(tolerance, 1e-300);
+  // Cells no finer than 1e-15 of the coordinates, so cell indices fit in 64 bits.
+  double maxAbs = 0;
+  for (double c : positions) maxAbs = std::max(maxAbs, std::abs(c));
+  const double cell = std::max({tolerance, 1e-15 * maxAbs, 1e-300});
   struct Key {
     std::int64_t x, y, z;
     bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
   };
   struct Hash {
     std::size_t operator()(const Key& k) const {
-      return static_cast<std::size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+      return static_cast<std::size_t>(static_cast<std::uint64_t>(k.x) * 73856093u ^ static_cast<std::uint64_t>(k.y) * 19349663u ^
+                                      static_cast<std::uint64_t>(k.z) * 83492791u);
     }
   };
   std::unordered_map<Key, std::vector<std::uint32_t>, Hash> grid;
@@ -194,7 +207,8 @@ std::size_t countDegenerate(const TriangleSoup& soup) {
 }
 
 std::size_t countSelfIntersections(const TriangleSoup& soup, double weldTolerance, double tolerance,
-                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs, std::size_t maxPairs) {
+                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs, std::size_t maxPairs,
+                                   double otherFaceDepth) {
   const std::vector<std::uint32_t> rep = weldVertices(soup.positions, weldTolerance);
   const std::size_t n = soup.triangleCount();
   std::vector<std::array<V3, 3>> tri(n);
@@ -259,7 +273,8 @@ std::size_t countSelfIntersections(const TriangleSoup& soup, double weldToleranc
         if (shares) continue;
         const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | t;
         if (found.count(key)) continue;
-        if (trianglesIntersect(tri[s].data(), tri[t].data(), tolerance)) {
+        const bool sameFace = soup.faceOf.size() != n || soup.faceOf[s] == soup.faceOf[t];  // no face ids: one face
+        if (trianglesIntersect(tri[s].data(), tri[t].data(), tolerance, sameFace ? 0.0 : otherFaceDepth)) {
           found.insert(key);
           if (pairs && pairs->size() < maxPairs) pairs->emplace_back(s, t);
         }

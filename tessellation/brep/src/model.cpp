@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <Standard_Failure.hxx>
+#include <XCAFApp_Application.hxx>
 
 #include "model_impl.h"
 
@@ -39,6 +40,10 @@ const char* surfaceKindName(SurfaceKind kind) {
     case SurfaceKind::kOther: return "other";
   }
   return "other";
+}
+
+ModelImpl::~ModelImpl() {
+  if (!doc.IsNull()) XCAFApp_Application::GetApplication()->Close(doc);
 }
 
 Model::Model(std::unique_ptr<ModelImpl> impl) : impl_(std::move(impl)) {}

@@ -17,6 +17,11 @@ namespace cetview::brep {
 
 class ModelImpl {
  public:
+  ModelImpl() = default;
+  ModelImpl(const ModelImpl&) = delete;
+  ModelImpl& operator=(const ModelImpl&) = delete;
+  ~ModelImpl();  // closes the XCAF document (the application keeps every open one alive)
+
   std::string source;
   // The XCAF document for STEP and IGES (names, colours, assembly); null for .brep and the demo part,
   // for which export builds one from `root`.

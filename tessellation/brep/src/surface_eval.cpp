@@ -45,13 +45,19 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   const double floor = 1e-9 * std::max({lu, lv, 1e-300});
   su = std::max(lu, floor);
   sv = std::max(lv, floor);
-  // Curved faces: weigh each direction by the square root of its curvature, so the Delaunay
-  // criterion judges shapes by how fast the surface turns rather than by length (a chord's sagitta
-  // grows with curvature times length squared). A cylinder's triangles then run along its straight
-  // direction, as they should; the anisotropy is capped at 10:1 in length.
+  // Weigh each direction by the square root of its curvature, so the Delaunay criterion judges
+  // shapes by how fast the surface turns rather than by length (a chord's sagitta grows with
+  // curvature times length squared). A cylinder's triangles then run along its straight direction,
+  // as they should; the anisotropy is capped at 10:1 in length.
+  // Only where the curvature is directional by construction (cylinders, cones, linear extrusions:
+  // straight in one direction); averaged curvatures of free-form faces say little about any one
+  // place, and a wrong stretch makes slivers that fold on a wavy surface. (Tori would gain too, but
+  // the coarser shared edges it gives them leave B-spline neighbours with flipped triangles.)
+  const GeomAbs_SurfaceType type = surface_.GetType();
+  const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion;
   const double kmax = std::max(ku, kv);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
-  if (kmax * size > 1e-3) {
+  if (directional && kmax * size > 1e-3) {
     const double kfloor = 1e-2 * kmax;
     su *= std::sqrt(std::max(ku, kfloor) / kmax);
     sv *= std::sqrt(std::max(kv, kfloor) / kmax);
@@ -93,6 +99,26 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
 }
 
 double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start) const {
+  bool clamped = false;
+  double d = projectFrom(m, u, v, maxIter, start, clamped);
+  // Stopped against a parameter bound of a surface periodic in the other direction (a sphere's
+  // pole): the foot may lie across the pole, half a period round.
+  if (clamped && (uPeriodic_ || vPeriodic_)) {
+    double u2 = uPeriodic_ ? u + 0.5 * surface_.UPeriod() : u, v2 = vPeriodic_ ? v + 0.5 * surface_.VPeriod() : v;
+    bool again = false;
+    const double d2 = projectFrom(m, u2, v2, maxIter, nullptr, again);
+    if (d2 < d) d = d2, u = u2, v = v2;
+  }
+  return d;
+}
+
+double SurfaceEval::projectOnce(const gp_Pnt& m, double u, double v, double* start) const {
+  bool clamped = false;
+  return projectFrom(m, u, v, 3, start, clamped, 0.1);
+}
+
+double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
+                                double settle) const {
   gp_Pnt s;
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
@@ -113,9 +139,9 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
     // Stop when the step moves the foot point by a negligible fraction of the residual.
     const double move = (stepU * du + stepV * dv).Magnitude();
     u += stepU, v += stepV;
-    if (!uPeriodic_) u = std::clamp(u, su0_, su1_);
-    if (!vPeriodic_) v = std::clamp(v, sv0_, sv1_);
-    if (move < 1e-3 * d) {
+    if (!uPeriodic_ && (u < su0_ || u > su1_)) u = std::clamp(u, su0_, su1_), clamped = true;
+    if (!vPeriodic_ && (v < sv0_ || v > sv1_)) v = std::clamp(v, sv0_, sv1_), clamped = true;
+    if (move < settle * d) {
       const gp_Pnt s2 = surface_.Value(u, v);
       const double d2 = s2.Distance(m);
       if (d2 < best) best = d2, bu = u, bv = v;

@@ -29,6 +29,9 @@ class SurfaceEval {
   // point found. maxIter bounds the derivative evaluations.
   // `start` (if given) receives |S(u, v) - m| at the starting (u, v): the corresponding-point distance.
   double project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start = nullptr) const;
+  // The refinement's estimate of the same: Gauss-Newton stops once a step moves the foot by less than
+  // a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
+  double projectOnce(const gp_Pnt& m, double u, double v, double* start) const;
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
@@ -37,6 +40,9 @@ class SurfaceEval {
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
  private:
+  double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
+                     double settle = 1e-3) const;
+
   BRepAdaptor_Surface surface_;
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;

@@ -93,10 +93,12 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
       FaceMesherSettings settings;
       settings.finalChordal = t.chordal;
       settings.finalAngle = t.angle;
+      settings.coincident = 1e-10 * t.model.bounds().diagonal();
       settings.reversed = t.model.faces()[face].reversed;
       s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings);
     }
-    const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh, s.report, cancel);
+    const FaceStatus status =
+        s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh, s.report, cancel, k == lastLevel());
     if (status == FaceStatus::kCancelled) return status;
     s.level = k;
   }

@@ -17,6 +17,7 @@ struct TriangleRecord {
   float facetCos = 1;    // cosine between the facet normal and its corners' mean surface normal
   std::uint8_t worstSample = 0;  // 0 centroid, 1 + i the midpoint of edge i (opposite corner i)
   std::uint8_t angleEdge = 0;    // edge whose ends' normals differ most
+  std::uint8_t longestFreeEdge = 3;  // longest unconstrained edge (3: none)
   std::uint8_t flags = 0;        // kFlipped | kCollapsed
   static constexpr std::uint8_t kFlipped = 1;    // no area, or no usable corner normal to compare
   static constexpr std::uint8_t kCollapsed = 2;  // two corners share a 3D point (pole, gap): dropped

@@ -16,7 +16,7 @@ class Tessellator;
 struct TriangleSoup {
   std::vector<double> positions;       // x, y, z per vertex
   std::vector<std::uint32_t> indices;  // three per triangle
-  std::vector<std::uint32_t> faceOf;   // the face id of each triangle (for reports)
+  std::vector<std::uint32_t> faceOf;   // the face id of each triangle (optional: empty means one face)
   std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
@@ -35,9 +35,12 @@ std::size_t countOpenEdges(const TriangleSoup& soup, double weldTolerance, std::
 std::size_t countDegenerate(const TriangleSoup& soup);
 
 // Pairs of triangles that properly intersect. Pairs sharing a (welded) vertex are not tested;
-// contacts closer than `tolerance` do not count. Up to maxPairs pairs are returned in `pairs`.
+// contacts closer than `tolerance` do not count. A pair from two different faces counts only when
+// one triangle pierces the other's plane deeper than `otherFaceDepth`: faces that touch (solids in
+// contact, coplanar faces) or meet tangentially cross by up to the deflection in any mesh, while a
+// fold or a real overlap goes deeper. Up to maxPairs pairs are returned in `pairs`.
 std::size_t countSelfIntersections(const TriangleSoup& soup, double weldTolerance, double tolerance,
                                    std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr,
-                                   std::size_t maxPairs = 16);
+                                   std::size_t maxPairs = 16, double otherFaceDepth = 0);
 
 }  // namespace cetview::brep

@@ -19,6 +19,10 @@
 //   showing a coarser level is instant. Every completed level k of every face is within
 //   schedule()[k].chordal of the exact surface, and shares its boundary vertices (same positions)
 //   with the faces across its edges: each completed level is watertight where the B-rep is closed.
+//   Exceptions, reported per face: a fallback face (meshed by BRepMesh, with its own boundary
+//   points), and a face whose coarse boundary polygon crosses itself in UV, which shows the
+//   fallback mesh on those coarse levels and is CET-meshed (watertight) from the first level where
+//   its boundary is valid.
 // - One bad face never stops the model: it is repaired or gets a fallback mesh, and report() says why.
 #pragma once
 
