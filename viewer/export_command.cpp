@@ -1,6 +1,5 @@
 // `cetview export MODEL -o OUT.{brep,glb,gltf,obj,stl} [--deflection D] [--angle A] [--threads N]`:
 // the final tessellation of a model, written through OpenCASCADE's writers (tessellation/brep).
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -12,6 +11,7 @@
 #include "brep/model.h"
 #include "brep/tessellator.h"
 #include "commands.h"
+#include "progress_bar.h"
 
 namespace cetview {
 namespace {
@@ -49,17 +49,12 @@ int runExport(const ExportOptions& o) {
   }
   Tessellator& t = *created.tessellator;
   const unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-  // Progress on a terminal only, at most every 100 ms.
-  const bool tty = isatty(fileno(stderr)) != 0;
-  auto last = std::chrono::steady_clock::now();
-  t.run(threads, [&](std::size_t done, std::size_t total) {
-    if (!tty) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (done != total && now - last < std::chrono::milliseconds(100)) return;
-    last = now;
-    std::fprintf(stderr, "\rtessellating %3zu%% (%zu/%zu faces)", total ? done * 100 / total : 100, done, total);
-    if (done == total) std::fputc('\n', stderr);
-  });
+  {
+    ProgressBar bar("export " + o.model);  // on a terminal only
+    t.run(threads, [&](std::size_t done, std::size_t total) {
+      bar.update(done, total, std::to_string(done) + "/" + std::to_string(total) + " faces");
+    });
+  }
   std::size_t reported = 0, notOk = 0;
   for (FaceId f = 0; f < loaded.model->faces().size(); ++f) {
     const FaceReport r = t.report(f);
@@ -69,7 +64,6 @@ int runExport(const ExportOptions& o) {
       std::fprintf(stderr, "cetview export: face %u: %s: %s\n", f, faceStatusName(r.status), r.reason.c_str());
   }
   if (notOk > 20) std::fprintf(stderr, "cetview export: ... %zu more faces repaired or with a fallback\n", notOk - 20);
-  if (tty) std::fprintf(stderr, "writing %s\n", o.output.c_str());
   error = exportModel(t, o.output);
   if (!error.empty()) {
     std::fprintf(stderr, "cetview export: %s\n", error.c_str());
