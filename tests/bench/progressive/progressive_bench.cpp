@@ -50,6 +50,13 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   }
   row.brepmesh = reference.brepmesh_ms;
 
+  // The window is open before a model loads: the renderer (and its pipelines, which lavapipe
+  // compiles when they are created) exists before the clock starts, as in the viewer.
+  auto renderer = engine::Renderer::createHeadless(device, {1280, 720});
+  if (!renderer) {
+    row.error = renderer.error().message;
+    return row;
+  }
   auto loaded = brep::loadModel(path);
   if (!loaded) {
     row.error = loaded.error;
@@ -60,11 +67,6 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   auto created = brep::Tessellator::create(*loaded.model, params);
   if (!created.tessellator) {
     row.error = created.error;
-    return row;
-  }
-  auto renderer = engine::Renderer::createHeadless(device, {1280, 720});
-  if (!renderer) {
-    row.error = renderer.error().message;
     return row;
   }
   engine::Renderer& r = **renderer;
