@@ -245,13 +245,18 @@ TEST(Triangulator, ConcavityIsRemovedLikeTrianglesDashP) {
   }
 }
 
-TEST(Triangulator, RefinementBatchesInsertWithoutRebuild) {
-  std::vector<Point2> p = square({0, 0}, 1, false);
-  Triangulator tri;
+// The square [-1, 1]^2 as a counter-clockwise loop (vertices 0..3), its domain marked.
+void constrainedUnitSquare(Triangulator& tri) {
+  const std::vector<Point2> p = square({0, 0}, 1, false);
   tri.addVertices(p.data(), p.size());
   tri.insertPending();
   for (std::uint32_t k = 0; k < 4; ++k) ASSERT_TRUE(tri.insertSegment(k, (k + 1) % 4).ok());
   tri.markDomain(DomainRule::kLoopOrientation);
+}
+
+TEST(Triangulator, RefinementBatchesInsertWithoutRebuild) {
+  Triangulator tri;
+  ASSERT_NO_FATAL_FAILURE(constrainedUnitSquare(tri));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-0.999, 0.999);
   std::size_t expectedVertices = 4;
@@ -279,12 +284,8 @@ TEST(Triangulator, RefinementBatchesInsertWithoutRebuild) {
 
 TEST(Triangulator, ReplaceConstraintMovesTheBoundary) {
   // A square whose bottom edge is refined outward into a bulge: the domain grows.
-  std::vector<Point2> p = square({0, 0}, 1, false);
   Triangulator tri;
-  tri.addVertices(p.data(), p.size());
-  tri.insertPending();
-  for (std::uint32_t k = 0; k < 4; ++k) ASSERT_TRUE(tri.insertSegment(k, (k + 1) % 4).ok());
-  tri.markDomain(DomainRule::kLoopOrientation);
+  ASSERT_NO_FATAL_FAILURE(constrainedUnitSquare(tri));
   std::vector<Point2> interior = {{0, 0}, {0.5, -0.9}, {-0.5, -0.9}};
   std::vector<VertexId> ids(interior.size());
   tri.insertPoints(interior.data(), interior.size(), ids.data());

@@ -23,19 +23,12 @@
 #include <XCAFDoc_ShapeTool.hxx>
 
 #include "brep/tessellator.h"
+#include "file_extension.h"
 #include "model_impl.h"
 
 namespace cetview::brep {
 namespace {
 
-std::string extensionOf(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 // The face's last level as a Poly_Triangulation in the face's own frame: referenced vertices only,
 // natural orientation (the FaceMesh is oriented by the face, the triangulation by the surface).
@@ -78,12 +71,12 @@ Handle(TDocStd_Document) documentFor(const ModelImpl& m) {
 }  // namespace
 
 bool exportFormatSupported(const std::string& path) {
-  const std::string ext = extensionOf(path);
+  const std::string ext = lowerExtension(path);
   return ext == "brep" || ext == "glb" || ext == "gltf" || ext == "obj" || ext == "stl";
 }
 
 std::string exportModel(const Tessellator& t, const std::string& path) {
-  const std::string ext = extensionOf(path);
+  const std::string ext = lowerExtension(path);
   if (!exportFormatSupported(path)) return path + ": unknown output format (use .brep, .glb, .gltf, .obj or .stl)";
   ModelImpl& m = t.model().impl();
   try {

@@ -10,6 +10,7 @@
 #include <Standard_Failure.hxx>
 #include <XCAFApp_Application.hxx>
 
+#include "file_extension.h"
 #include "model_impl.h"
 
 namespace cetview::brep {
@@ -59,14 +60,6 @@ namespace {
 
 enum class Format { kUnknown, kStep, kIges, kBrep };
 
-std::string lowerExtension(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 // Recognises the format from the first bytes, so a file with a wrong or missing extension still
 // loads and a renamed text file is refused before any reader sees it.
