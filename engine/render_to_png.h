@@ -1,6 +1,6 @@
-// One-call headless rendering: a mesh in, an image or PNG out. What the viewer's `render`
-// subcommand calls; it sets up its own instance, device and renderer, so it costs a device
-// creation per call (use a Renderer directly to render many frames).
+// One-call headless rendering: a mesh in, an image or PNG out, for tests and tools (`cetview render`
+// streams levels through a Renderer instead). It sets up its own instance, device and renderer, so
+// it costs a device creation per call (use a Renderer directly to render many frames).
 #pragma once
 
 #include <string>

@@ -108,6 +108,8 @@ class Renderer {
   // counts its previous array until the new one is complete).
   std::uint64_t committedTriangles() const { return gpuScene_->committedTriangles(); }
   std::uint32_t swapchainRecreations() const { return recreations_; }
+  // Whether faces are drawn with multi-draw indirect (see GpuSceneOptions) or one call per face.
+  bool usesIndirectDraws() const { return gpuScene_->usesIndirectDraws(); }
   const Device& device() const { return device_; }
 
   // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.

@@ -9,12 +9,6 @@ void CetMesh::reserve(std::size_t vertices, std::size_t triangles) {
   triangles_.reserve(triangles);
 }
 
-void CetMesh::clear() {
-  points_.clear();
-  L_.clear();
-  triangles_.clear();
-}
-
 int CetMesh::ghostIndex(TriangleId t) const {
   const Triangle& tr = triangles_[t];
   if (tr.M[0] == kInfiniteVertex) return 0;
@@ -83,12 +77,6 @@ VertexId CetMesh::addVertex(Point2 p) {
   points_.push_back(p);
   L_.push_back(kNoTriangle);
   return static_cast<VertexId>(points_.size() - 1);
-}
-
-void CetMesh::popVertex() {
-  assert(!points_.empty() && L_.back() == kNoTriangle);
-  points_.pop_back();
-  L_.pop_back();
 }
 
 TriangleId CetMesh::addTriangle(VertexId a, VertexId b, VertexId c) {

@@ -73,7 +73,6 @@ class CetMesh {
   static_assert(sizeof(Triangle) == 28, "a triangle is 28 bytes: 3 vertex ids, 3 neighbours, 1 flag byte");
 
   void reserve(std::size_t vertices, std::size_t triangles);
-  void clear();
 
   // ---- Retrieval ----
   std::size_t vertexCount() const { return points_.size(); }
@@ -111,7 +110,6 @@ class CetMesh {
 
   // ---- Modification ----
   VertexId addVertex(Point2 p);
-  void popVertex();  // removes the last vertex; it must not be referenced by any triangle
   TriangleId addTriangle(VertexId a, VertexId b, VertexId c);  // counter-clockwise, no neighbours yet
   void link(TriangleId t, int i, TriangleId u, int j);         // make (t, i) and (u, j) neighbours
   void setIncident(VertexId v, TriangleId t) { L_[v] = t; }

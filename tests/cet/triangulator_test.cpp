@@ -297,9 +297,8 @@ TEST(Triangulator, ReplaceConstraintMovesTheBoundary) {
   // Area of the square plus the polygon (-1,-1) (-0.5,-1.5) (0,-1.7) (0.5,-1.5) (1,-1).
   const double bulgeArea = 0.5 * 0.5 * 0.5 * 2 + 0.5 * (0.5 + 0.7) * 0.5 * 2;
   EXPECT_NEAR(coveredArea(tri), 4.0 + bulgeArea, 1e-12);
-  EXPECT_EQ(tri.mesh().findEdge(0, 1).t == kNoTriangle ||
-                !tri.mesh().isConstrained(tri.mesh().findEdge(0, 1).t, tri.mesh().findEdge(0, 1).i),
-            true);
+  const EdgeRef old = tri.mesh().findEdge(0, 1);
+  EXPECT_TRUE(old.t == kNoTriangle || !tri.mesh().isConstrained(old.t, old.i)) << "the replaced edge is no constraint";
   expectSegmentsPresent(tri, {{0, bulgeIds[0]}, {bulgeIds[0], bulgeIds[1]}, {bulgeIds[1], bulgeIds[2]}, {bulgeIds[2], 1}});
 }
 

@@ -196,6 +196,7 @@ TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
   indirect.msaaSamples = 4;  // as the golden
   Renderer* r = load(mesh, indirect);
   ASSERT_NE(r, nullptr);
+  ASSERT_TRUE(r->usesIndirectDraws()) << "the test must exercise the indirect path";
   EXPECT_FALSE(r->lastUploadStats().workLeft);
   ASSERT_TRUE(r->finishUploads().ok());
   Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
