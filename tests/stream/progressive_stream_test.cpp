@@ -148,15 +148,19 @@ TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) {
   }
 }
 
-TEST(ProgressiveStream, DestroyingMidLevelReturnsPromptly) {
+TEST(ProgressiveStream, DestroyingMidLevelCancelsTheRest) {
+  // Nobody reads, so the small rings fill at once and the workers wait on them. Destroying the
+  // stream must end that wait and abandon the model, not finish it first (a hang would time out).
   Demo demo;
-  const auto start = std::chrono::steady_clock::now();
   {
     ProgressiveStream stream(*demo.tess, demo.tess->lastLevel(), StreamOptions{2, 1 << 12});
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // nobody reads: the rings fill up
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(seconds, 30.0) << "cancellation must not wait for the whole model";
+  std::size_t unfinished = 0;
+  for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) {
+    unfinished += demo.tess->faceLevel(f) < demo.tess->lastLevel() ? 1 : 0;
+  }
+  EXPECT_GT(unfinished, 0u) << "the stream finished the model instead of cancelling";
 }
 
 }  // namespace
