@@ -3,6 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <stdexcept>
+
+#include <Standard_Failure.hxx>
+#include <TopoDS.hxx>
+
+#include "brepmesh_fallback.h"
 
 #include "model_impl.h"
 #include "parallel.h"
@@ -88,23 +95,72 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
   TessellatorImpl::FaceState& s = t.faces[face];
   level = std::min(level, lastLevel());
   if (level > t.edgeLevel.load()) return s.report.status;  // contract: edges first
-  for (int k = s.level + 1; k <= level; ++k) {
-    if (!s.mesher) {
-      FaceMesherSettings settings;
-      settings.finalChordal = t.chordal;
-      settings.finalAngle = t.angle;
-      settings.coincident = 1e-10 * t.model.bounds().diagonal();
-      settings.reversed = t.model.faces()[face].reversed;
-      s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings);
+  try {
+    for (int k = s.level + 1; k <= level; ++k) {
+      if (s.failed) {  // an isolated face keeps what it has on every further level
+        s.mesh.levels.push_back(s.mesh.levels.back());
+        s.mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(s.mesh.vertexCount()));
+        s.level = k;
+        continue;
+      }
+      if (s.injectFailure) throw std::runtime_error("failure injected for testing");
+      if (!s.mesher) {
+        FaceMesherSettings settings;
+        settings.finalChordal = t.chordal;
+        settings.finalAngle = t.angle;
+        settings.coincident = 1e-10 * t.model.bounds().diagonal();
+        settings.reversed = t.model.faces()[face].reversed;
+        s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings);
+      }
+      const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh,
+                                                  s.report, cancel, k == lastLevel());
+      if (status == FaceStatus::kCancelled) return status;
+      s.level = k;
     }
-    const FaceStatus status =
-        s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh, s.report, cancel, k == lastLevel());
-    if (status == FaceStatus::kCancelled) return status;
-    s.level = k;
+  } catch (const std::exception& e) {
+    t.isolateFailedFace(face, level, e.what());
+  } catch (const Standard_Failure& e) {
+    t.isolateFailedFace(face, level, std::string("OpenCASCADE: ") + e.GetMessageString());
+  } catch (...) {
+    t.isolateFailedFace(face, level, "unknown exception");
   }
   if (s.level == lastLevel()) s.mesher.reset();
   return s.report.status;
 }
+
+void TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::string& what) {
+  FaceState& s = faces[face];
+  s.mesher.reset();
+  s.failed = true;
+  std::string reason = "meshing failed (" + what + ")";
+  std::vector<std::uint32_t> indices;
+  std::string failure;
+  bool meshed = false;
+  try {
+    const TopoDS_Face forward = TopoDS::Face(model.impl().faceShapes[face].Oriented(TopAbs_FORWARD));
+    meshed = meshFaceWithBRepMesh(forward, model.faces()[face].reversed, chordal, angle, s.mesh, indices, failure);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  } catch (const Standard_Failure& e) {
+    failure = e.GetMessageString();
+  } catch (...) {
+    failure = "unknown exception";
+  }
+  s.report.status = meshed ? FaceStatus::kFallback : FaceStatus::kEmpty;
+  s.report.reason = meshed ? reason + "; meshed by the fallback" : reason + "; fallback failed too: " + failure;
+  if (!meshed) indices.clear();
+  // Levels before the failure keep their triangles; the failed level and the rest show `indices`.
+  const std::size_t levels = static_cast<std::size_t>(level) + 1;
+  s.mesh.levels.resize(std::min(s.mesh.levels.size(), static_cast<std::size_t>(s.level + 1)));
+  s.mesh.levelVertexEnd.resize(s.mesh.levels.size());
+  while (s.mesh.levels.size() < levels) {
+    s.mesh.levels.push_back(indices);
+    s.mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(s.mesh.vertexCount()));
+  }
+  s.level = level;
+}
+
+void Tessellator::failFaceForTesting(FaceId face) { impl_->faces[face].injectFailure = true; }
 
 bool Tessellator::run(unsigned threads, const ProgressFn& progress, const std::atomic<bool>* cancel, int lastLevelWanted) {
   const int last = lastLevelWanted < 0 ? lastLevel() : std::min(lastLevelWanted, lastLevel());

@@ -20,6 +20,8 @@ class TessellatorImpl {
     FaceMesh mesh;
     FaceReport report;
     int level = -1;
+    bool failed = false;         // an exception escaped its mesher: isolated (see isolateFailedFace)
+    bool injectFailure = false;  // failFaceForTesting()
   };
 
   const Model& model;
@@ -29,6 +31,12 @@ class TessellatorImpl {
   EdgeTable edges;
   std::atomic<int> edgeLevel{-1};
   std::vector<FaceState> faces;
+
+  // A face whose meshing threw (a bug or exhausted memory, never a property of the input that the
+  // mesher knows how to report): its mesher is dropped, BRepMesh meshes it if it can (kFallback), else
+  // it stays without triangles (kEmpty); either way with the reason, and levels up to `level` exist,
+  // so the rest of the model goes on.
+  void isolateFailedFace(FaceId face, int level, const std::string& what);
 };
 
 // Plans the levels: tolerances halving from about 1% of the diagonal down to `chordal` (faster than

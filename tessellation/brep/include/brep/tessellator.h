@@ -119,6 +119,10 @@ class Tessellator {
   // a discretised level never changes.
   void edgePolyline(EdgeId edge, int level, std::vector<float>& xyz) const;
 
+  // Test hook: the next advanceFace() of `face` throws inside its mesher, as a bug would, so tests
+  // can check that the face is isolated (FaceReport says why) and the rest of the model goes on.
+  void failFaceForTesting(FaceId face);
+
   TessellatorImpl& impl() const { return *impl_; }
 
  private:

@@ -1,0 +1,83 @@
+// One failing face never takes the model down: a face whose mesher throws (injected here, as a bug
+// would) is isolated with its reason, gets the fallback mesh, and every other face is exactly what a
+// clean run gives.
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+namespace cetview::brep {
+namespace {
+
+std::unique_ptr<Model> demo() {
+  LoadResult r = loadModel("demo");
+  EXPECT_TRUE(r) << r.error;
+  return std::move(r.model);
+}
+
+void expectSameFace(const Tessellator& a, const Tessellator& b, FaceId f) {
+  const FaceMesh& x = a.faceMesh(f);
+  const FaceMesh& y = b.faceMesh(f);
+  EXPECT_EQ(x.positions, y.positions) << "face " << f;
+  EXPECT_EQ(x.levels, y.levels) << "face " << f;
+  EXPECT_EQ(a.report(f).status, b.report(f).status) << "face " << f;
+}
+
+void expectWellFormed(const Tessellator& t, FaceId f) {
+  const FaceMesh& m = t.faceMesh(f);
+  ASSERT_EQ(m.levels.size(), static_cast<std::size_t>(t.lastLevel() + 1));
+  ASSERT_EQ(m.levelVertexEnd.size(), m.levels.size());
+  for (const auto& level : m.levels) {
+    EXPECT_EQ(level.size() % 3, 0u);
+    for (std::uint32_t i : level) ASSERT_LT(i, m.vertexCount());
+  }
+}
+
+TEST(Isolation, ThrowingFaceFallsBackAndTheRestIsUntouched) {
+  auto m = demo();
+  auto clean = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  auto faulty = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(clean && faulty);
+  const FaceId bad = 3;
+  faulty->failFaceForTesting(bad);
+  ASSERT_TRUE(clean->run(2));
+  ASSERT_TRUE(faulty->run(2));
+
+  const FaceReport r = faulty->report(bad);
+  EXPECT_EQ(r.status, FaceStatus::kFallback) << r.reason;
+  EXPECT_NE(r.reason.find("failure injected for testing"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find('\n'), std::string::npos);
+  expectWellFormed(*faulty, bad);
+  EXPECT_FALSE(faulty->faceMesh(bad).levels.back().empty()) << "the fallback mesh shows the face";
+  for (FaceId f = 0; f < m->faces().size(); ++f) {
+    if (f != bad) expectSameFace(*clean, *faulty, f);
+  }
+}
+
+TEST(Isolation, FailureAfterSomeLevelsKeepsTheCompletedOnes) {
+  auto m = demo();
+  auto clean = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  auto faulty = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(clean && faulty);
+  ASSERT_GE(clean->lastLevel(), 3);
+  ASSERT_TRUE(clean->run(1));
+  const FaceId bad = 0;
+  for (int k = 0; k <= faulty->lastLevel(); ++k) {
+    ASSERT_TRUE(faulty->discretiseEdges(k));
+    if (k == 2) faulty->failFaceForTesting(bad);
+    for (FaceId f = 0; f < m->faces().size(); ++f) faulty->advanceFace(f, k);
+  }
+  EXPECT_EQ(faulty->report(bad).status, FaceStatus::kFallback) << faulty->report(bad).reason;
+  expectWellFormed(*faulty, bad);
+  const FaceMesh& x = faulty->faceMesh(bad);
+  const FaceMesh& y = clean->faceMesh(bad);
+  EXPECT_EQ(x.levels[0], y.levels[0]);
+  EXPECT_EQ(x.levels[1], y.levels[1]);
+  EXPECT_NE(x.levels[2], y.levels[2]) << "from level 2 on, the face shows the fallback mesh";
+  EXPECT_EQ(x.levels[2], x.levels.back());
+  for (FaceId f = 0; f < m->faces().size(); ++f) {
+    if (f != bad) expectSameFace(*clean, *faulty, f);
+  }
+}
+
+}  // namespace
+}  // namespace cetview::brep
