@@ -11,6 +11,7 @@
 #include "brep/model.h"
 #include "brep/tessellator.h"
 #include "commands.h"
+#include "face_problems.h"
 #include "progress_bar.h"
 
 namespace cetview {
@@ -55,15 +56,7 @@ int runExport(const ExportOptions& o) {
       bar.update(done, total, std::to_string(done) + "/" + std::to_string(total) + " faces");
     });
   }
-  std::size_t reported = 0, notOk = 0;
-  for (FaceId f = 0; f < loaded.model->faces().size(); ++f) {
-    const FaceReport r = t.report(f);
-    if (r.status == FaceStatus::kOk) continue;
-    ++notOk;
-    if (++reported <= 20)
-      std::fprintf(stderr, "cetview export: face %u: %s: %s\n", f, faceStatusName(r.status), r.reason.c_str());
-  }
-  if (notOk > 20) std::fprintf(stderr, "cetview export: ... %zu more faces repaired or with a fallback\n", notOk - 20);
+  printFaceProblems(stderr, "cetview export", *loaded.model, collectFaceProblems(t));
   error = exportModel(t, o.output);
   if (!error.empty()) {
     std::fprintf(stderr, "cetview export: %s\n", error.c_str());

@@ -59,6 +59,7 @@ std::string LiveTessellation::start() {
   visible_.resize(model_->instances().size(), true);
   applyVisibility();
   target_ = 0;
+  problemsReady_ = false;
   stream::StreamOptions streamOptions;
   streamOptions.threads = threads_;
   started_ = std::chrono::steady_clock::now();
@@ -78,6 +79,7 @@ int LiveTessellation::setDeflection(double absolute) {
       break;
     }
   }
+  if (level != target_) problemsReady_ = false;
   target_ = level;
   producer_->setTargetLevel(level);
   consumer_->setShowLevel(level, *link_);
@@ -93,6 +95,15 @@ std::string LiveTessellation::setAngle(double degrees) {
 
 void LiveTessellation::poll(std::size_t byteBudget) {
   consumer_->poll(byteBudget, *link_);
+}
+
+const std::vector<FaceProblem>* LiveTessellation::faceProblems() {
+  if (!problemsReady_) {
+    if (!producer_->idle() || consumer_->completeLevel() < target_) return nullptr;
+    problems_ = collectFaceProblems(*tess_);
+    problemsReady_ = true;
+  }
+  return &problems_;
 }
 
 double LiveTessellation::secondsSinceStart() const {

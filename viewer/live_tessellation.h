@@ -15,6 +15,7 @@
 #include "brep/model.h"
 #include "brep/tessellator.h"
 #include "engine/scene.h"
+#include "face_problems.h"
 #include "model_scene.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
@@ -82,6 +83,10 @@ class LiveTessellation {
   double coarsestAbsolute() const { return levelTolerance(0); }
   double requestedDeflection() const { return requested_; }
   double angleDeg() const { return angleDeg_; }
+  // Faces repaired, meshed by the fallback or left empty, once the stream is idle at the target
+  // level (their reports are settled then); null while it works. Recomputed after each retarget.
+  const std::vector<FaceProblem>* faceProblems();
+
   // Since the stream (re)started; the first complete level's time is the time to first frame.
   double secondsSinceStart() const;
 
@@ -106,6 +111,8 @@ class LiveTessellation {
   std::vector<std::uint32_t> heatCapacity_;        // per model part: faces of its heat part (0: none yet)
   std::vector<engine::InstanceId> heatInstances_;  // per model instance
   bool heatShown_ = false;
+  std::vector<FaceProblem> problems_;
+  bool problemsReady_ = false;
   void applyVisibility();
 };
 

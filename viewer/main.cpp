@@ -10,6 +10,10 @@ int main(int argc, char** argv) {
   CLI::App app{"cetview: progressive Vulkan viewer for B-rep CAD models (STEP, IGES, .brep)", "cetview"};
   app.set_version_flag("--version", std::string("cetview ") + CETVIEW_VERSION);
   app.require_subcommand(1);
+  // Usage errors are one line, like every other error of cetview.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("cetview: ") + e.what() + " (see cetview --help)\n";
+  });
   int exitCode = 0;
   cetview::addCdtCommand(app, exitCode);
   cetview::addExportCommand(app, exitCode);

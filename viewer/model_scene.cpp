@@ -17,6 +17,19 @@ void expectOk(const engine::Status& status, const char* what) {
 }
 }  // namespace
 
+std::string checkDisplayable(const brep::Model& model) {
+  const brep::Bounds b = model.bounds();
+  double reach = 0;
+  for (int i = 0; i < 3; ++i) reach = std::max({reach, std::abs(b.min[i]), std::abs(b.max[i])});
+  if (reach <= kDisplayableExtent) return {};
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "coordinates reach %.3g model units, beyond what the renderer can show (%.0e); 'cetview export' "
+                "still writes its mesh",
+                reach, kDisplayableExtent);
+  return text;
+}
+
 engine::Color8 toColor8(const brep::Color& c) {
   const auto encode = [](float v) {
     v = std::clamp(v, 0.0f, 1.0f);

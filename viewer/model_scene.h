@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "brep/model.h"
@@ -12,6 +13,11 @@
 #include "stream/stream_consumer.h"
 
 namespace cetview {
+
+// The renderer works in 32-bit floats: a model whose coordinates reach beyond kDisplayableExtent
+// (squared distances would overflow) cannot be shown. Returns the one-line reason, empty when it can.
+constexpr double kDisplayableExtent = 1e15;
+std::string checkDisplayable(const brep::Model& model);
 
 // linear RGB (brep, XCAF) -> sRGB-encoded 8-bit (engine).
 engine::Color8 toColor8(const brep::Color& c);

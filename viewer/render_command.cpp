@@ -12,6 +12,7 @@
 #include "brep/tessellator.h"
 #include "brep/tolerance.h"
 #include "commands.h"
+#include "face_problems.h"
 #include "engine/camera.h"
 #include "engine/context.h"
 #include "engine/image.h"
@@ -105,6 +106,7 @@ int runRender(const RenderCli& cli) {
   if (!loaded) return fail(2, loaded.error);
   const auto loadedAt = std::chrono::steady_clock::now();
   const brep::Model& model = *loaded.model;
+  if (std::string e = checkDisplayable(model); !e.empty()) return fail(2, cli.model + ": " + e);
   auto created = brep::Tessellator::create(model, params);
   if (!created.tessellator) return fail(2, created.error);
   brep::Tessellator& tess = *created.tessellator;
@@ -162,6 +164,8 @@ int runRender(const RenderCli& cli) {
       std::fflush(stdout);
     }
     if (next == last) {
+      // Every face reached the last level and the stream is idle: the reports are settled.
+      printFaceProblems(stderr, "cetview render", model, collectFaceProblems(tess));
       if (auto s = engine::writePng(*image, cli.output); !s) return fail(1, s.error().message);
       if (!cli.levels) {
         std::printf("render: %s: %zu faces, %llu triangles, deflection %.6g in %.1f ms on %s -> %s\n", cli.model.c_str(),

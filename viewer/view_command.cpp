@@ -139,6 +139,8 @@ class Viewer {
   void setInstancesVisible(const TreeNode& node, bool visible);
   bool anyVisible(const TreeNode& node) const;
   void updateHeatMap();
+  // Prints faces that newly have a problem report (once per face and model) to stderr.
+  void reportFaceProblems();
   void setDeflection(double absolute);
   void setAngle(double degrees);
 
@@ -168,6 +170,7 @@ class Viewer {
   float angleSlider_ = 20.0f;
   char openPath_[1024] = {};
   bool openPopup_ = false;
+  std::vector<bool> problemPrinted_;  // per face of the open model
   std::string status_;  // one line shown in the stats panel (errors of open, screenshot)
 
   // Frame timing.
@@ -197,6 +200,7 @@ glm::vec2 Viewer::viewport() const {
 std::string Viewer::openModel(const std::string& path) {
   brep::LoadResult loaded = brep::loadModel(path);
   if (!loaded) return loaded.error;
+  if (std::string e = checkDisplayable(*loaded.model); !e.empty()) return path + ": " + e;
   // The requested deflection: relative to this model's diagonal, or absolute as given.
   double absolute = 0;
   const double diagonal = loaded.model->bounds().diagonal();
@@ -216,6 +220,7 @@ std::string Viewer::openModel(const std::string& path) {
   auto created = LiveTessellation::create(std::move(loaded.model), r_.scene(), options);
   if (!created.live) return created.error;
   live_ = std::move(created.live);
+  problemPrinted_.assign(live_->model().faces().size(), false);
   buildTree();
   const glm::vec2 vp = viewport();
   const float aspect = vp.y > 0 ? vp.x / vp.y : 1.0f;
@@ -575,9 +580,30 @@ void Viewer::drawModelPanel() {
     ImGui::Text("max %.4g %.4g %.4g", b.max[0], b.max[1], b.max[2]);
     ImGui::Text("size %.4g x %.4g x %.4g", b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]);
   }
+  if (const std::vector<FaceProblem>* problems = live_->faceProblems(); problems && !problems->empty()) {
+    const std::string header = "Faces with problems (" + std::to_string(problems->size()) + ")###problems";
+    if (ImGui::CollapsingHeader(header.c_str())) {
+      constexpr std::size_t kShown = 200;
+      for (std::size_t i = 0; i < problems->size() && i < kShown; ++i)
+        ImGui::TextWrapped("%s", describeFaceProblem(m, (*problems)[i]).c_str());
+      if (problems->size() > kShown) ImGui::Text("... and %zu more", problems->size() - kShown);
+    }
+  }
   ImGui::Separator();
   if (tree_) drawTreeNode(*tree_);
   ImGui::End();
+}
+
+void Viewer::reportFaceProblems() {
+  const std::vector<FaceProblem>* problems = live_->faceProblems();
+  if (!problems) return;
+  std::vector<FaceProblem> fresh;
+  for (const FaceProblem& p : *problems) {
+    if (problemPrinted_[p.face]) continue;
+    problemPrinted_[p.face] = true;
+    fresh.push_back(p);
+  }
+  printFaceProblems(stderr, "cetview view", live_->model(), fresh);
 }
 
 void Viewer::drawStatsPanel() {
@@ -771,6 +797,7 @@ int Viewer::run() {
       }
     }
     live_->poll(kPollBytesPerFrame);
+    reportFaceProblems();
     // The triangles' box once they exist (a file's B-rep box can miss instances), else the model's.
     const engine::Bounds sceneBounds = r_.scene().bounds();
     camera_.setBounds(sceneBounds.empty() ? live_->modelScene().bounds() : sceneBounds);

@@ -321,7 +321,8 @@ Status Triangulator::insertSegmentPiece(VertexId a, VertexId b, VertexId* reache
     if (mesh_.isConstrained(t, edge)) {
       return Status{Status::Code::kCrossingSegments,
                     "segment " + vertexName(a) + "-" + vertexName(b) + " crosses the constraint edge " +
-                        vertexName(right) + "-" + vertexName(left)};
+                        vertexName(right) + "-" + vertexName(left),
+                    {right, left}};
     }
     crossed.emplace_back(right, left);
     const EdgeRef across = mesh_.twin(EdgeRef{t, edge});

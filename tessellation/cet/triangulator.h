@@ -37,6 +37,8 @@ struct Status {
   enum class Code { kOk, kCrossingSegments, kBadVertex, kNoTriangulation };
   Code code = Code::kOk;
   std::string message;  // one line, empty when ok
+  // kCrossingSegments: the constraint edge the new segment crosses (its endpoints' vertex ids).
+  VertexId crossed[2] = {kInfiniteVertex, kInfiniteVertex};
   bool ok() const { return code == Code::kOk; }
 };
 

@@ -21,6 +21,10 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Circ.hxx>
 
@@ -51,6 +55,45 @@ TEST(HardCases, TorusAndCylinderSeams) {
   checkAtSeveralDeflections(BRepPrimAPI_MakeTorus(10, 3).Shape(), "torus");
   checkAtSeveralDeflections(BRepPrimAPI_MakeCylinder(5, 20).Shape(), "cylinder");
   checkAtSeveralDeflections(BRepPrimAPI_MakeCylinder(0.5, 50).Shape(), "long_cylinder");
+}
+
+// Exporters that keep only 3D curves write faces whose edges have no pcurve: the loader projects
+// them (seams included: the pair in the surface's domain, the interior on the left), and the mesh
+// keeps the whole promise, watertight across the rebuilt seams. (Degenerate edges at poles and
+// apexes exist only as pcurves, so no file lacks theirs.)
+TopoDS_Shape withoutPcurves(TopoDS_Shape shape) {
+  BRep_Builder builder;
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(f.Current());
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+      if (!BRep_Tool::Degenerated(TopoDS::Edge(e.Current())))
+        builder.UpdateEdge(TopoDS::Edge(e.Current()), Handle(Geom2d_Curve)(), face, 1e-7);
+    }
+  }
+  return shape;
+}
+
+TEST(HardCases, MissingPcurvesAreProjected) {
+  const std::pair<TopoDS_Shape, const char*> shapes[] = {
+      {BRepPrimAPI_MakeCylinder(5, 20).Shape(), "cylinder"},
+      {BRepPrimAPI_MakeSphere(10).Shape(), "sphere"},
+      {BRepPrimAPI_MakeTorus(10, 3).Shape(), "torus"},
+      {BRepPrimAPI_MakeCone(5, 2, 10).Shape(), "cone"},
+  };
+  for (const auto& [shape, name] : shapes) {
+    SCOPED_TRACE(name);
+    auto model = test::loadShape(withoutPcurves(shape), std::string(name) + "_no_pcurves");
+    ASSERT_TRUE(model);
+    auto t = test::tessellateAndCheck(*model, test::relative(0.002));
+    ASSERT_TRUE(t);
+    std::size_t projected = 0;
+    for (FaceId f = 0; f < model->faces().size(); ++f) {
+      const FaceReport r = t->report(f);
+      EXPECT_TRUE(r.status == FaceStatus::kOk || r.status == FaceStatus::kRepaired) << f << ": " << r.reason;
+      if (r.reason.find("projected the missing pcurve") != std::string::npos) ++projected;
+    }
+    EXPECT_GE(projected, 1u) << "the curved face reports its repair";
+  }
 }
 
 TEST(HardCases, PeriodicBSpline) {

@@ -38,6 +38,7 @@ FaceTopology buildFaceTopology(const ModelImpl& model, FaceId f) {
   FaceTopology topo;
   const PartId part = model.faces[f].part;
   topo.face = TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD));
+  if (!model.loadRepairs[f].empty()) topo.repairs.push_back(model.loadRepairs[f]);
   try {
     BRepAdaptor_Surface surface(topo.face, Standard_False);
     const bool uPeriodic = surface.IsUPeriodic(), vPeriodic = surface.IsVPeriodic();

@@ -1,5 +1,6 @@
 // OpenCASCADE .brep files and plain shapes (the demo part): parts are the solids and shells that the
 // shape places more than once (one part, several instances); everything else forms one part.
+#include <fstream>
 #include <map>
 #include <mutex>
 
@@ -33,8 +34,16 @@ void silenceOcctMessages() {
 std::string loadBrepFile(ModelImpl& m, const std::string& path) {
   TopoDS_Shape shape;
   BRep_Builder builder;
-  if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull())
-    return "not a readable OpenCASCADE .brep file (truncated or malformed)";
+  std::ifstream in(path, std::ios::binary);
+  // OpenCASCADE's reader loops for ever on a token it cannot parse (a NaN coordinate, a word where a
+  // number belongs): with exceptions on, the failed read ends the load instead (loadModel reports it).
+  in.exceptions(std::ios::badbit | std::ios::failbit);
+  try {
+    BRepTools::Read(shape, in, builder);
+  } catch (const std::ios_base::failure&) {
+    return "not a readable OpenCASCADE .brep file (malformed or truncated)";
+  }
+  if (shape.IsNull()) return "not a readable OpenCASCADE .brep file (truncated or malformed)";
   std::string name = path.substr(path.find_last_of('/') + 1);
   addPartsFromShape(m, shape, name.substr(0, name.find_last_of('.')));
   return {};

@@ -1,6 +1,8 @@
 // STEP and IGES through XCAF: parts (unique shapes), instances (placement, colour, assembly path),
 // names and face colours survive. A part referenced by several instances is loaded once.
+#include <fstream>
 #include <map>
+#include <string>
 
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -25,6 +27,22 @@
 
 namespace cetview::brep {
 namespace {
+
+// Whether a STEP file carries AP242 tessellated geometry (triangulated faces, tessellated shells),
+// for a clear error when that is all it has. Read in blocks: files can be large.
+bool mentionsTessellatedGeometry(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string block(1 << 16, '\0');
+  std::string carry;
+  while (in) {
+    in.read(&block[0], static_cast<std::streamsize>(block.size()));
+    const std::string text = carry + block.substr(0, static_cast<std::size_t>(in.gcount()));
+    if (text.find("TRIANGULATED_FACE") != std::string::npos || text.find("TESSELLATED_") != std::string::npos)
+      return true;
+    carry = text.size() > 32 ? text.substr(text.size() - 32) : text;
+  }
+  return false;
+}
 
 std::string labelName(const TDF_Label& label) {
   Handle(TDataStd_Name) name;
@@ -66,7 +84,10 @@ std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges) {
     reader.SetViewMode(false);
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return "not a readable STEP file (truncated or malformed)";
     if (reader.ChangeReader().NbRootsForTransfer() == 0) return "the STEP file holds no shape to transfer";
-    if (!reader.Transfer(doc)) return "STEP transfer failed";
+    if (!reader.Transfer(doc)) {
+      return mentionsTessellatedGeometry(path) ? "no B-rep faces: the STEP file holds only tessellated geometry"
+                                               : "STEP transfer failed (no shape could be made from its entities)";
+    }
   }
   m.doc = doc;
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());

@@ -1,11 +1,18 @@
 // Indexing of parts into global face and edge ids, and the per-face facts the API exposes.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_Surface.hxx>
+#include <gp_Vec2d.hxx>
 #include <Bnd_Box.hxx>
+#include <ShapeFix_Edge.hxx>
 #include <GProp_GProps.hxx>
 #include <NCollection_DataMap.hxx>
 #include <TopExp.hxx>
@@ -60,6 +67,99 @@ EdgeId ModelImpl::edgeId(PartId p, const TopoDS_Shape& edge) const {
   return local == 0 ? UINT32_MAX : parts[p].firstEdge + static_cast<EdgeId>(local - 1);
 }
 
+// A seam's pair of projected pcurves may come out whole periods away from the surface's domain (u = 2pi
+// and 4pi on a cylinder) and the wrong way round (the face's interior must lie on the left of each
+// occurrence, in the FORWARD face's UV). Both are put right here.
+void fixProjectedSeam(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+  const TopoDS_Edge forwardEdge = TopoDS::Edge(edge.Oriented(TopAbs_FORWARD));
+  const TopoDS_Edge reversedEdge = TopoDS::Edge(edge.Oriented(TopAbs_REVERSED));
+  double first = 0, last = 0, f2 = 0, l2 = 0;
+  Handle(Geom2d_Curve) c1 = BRep_Tool::CurveOnSurface(forwardEdge, face, first, last);
+  Handle(Geom2d_Curve) c2 = BRep_Tool::CurveOnSurface(reversedEdge, face, f2, l2);
+  if (c1.IsNull() || c2.IsNull() || c1 == c2) return;
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  surface->Bounds(u0, u1, v0, v1);
+  const double mid = 0.5 * (first + last);
+  gp_Pnt2d a, b;
+  gp_Vec2d along;
+  c1->D1(mid, a, along);
+  b = c2->Value(mid);
+  // The FORWARD edge runs along `along`; its left side is (-along.y, along.x).
+  bool swap = false;
+  gp_Vec2d shift(0, 0);
+  if (surface->IsUPeriodic() && std::abs(std::abs(a.X() - b.X()) - surface->UPeriod()) < 1e-6 * surface->UPeriod()) {
+    swap = (b.X() - a.X()) * -along.Y() < 0;
+    shift.SetX(-std::round((std::min(a.X(), b.X()) - u0) / surface->UPeriod()) * surface->UPeriod());
+  } else if (surface->IsVPeriodic() &&
+             std::abs(std::abs(a.Y() - b.Y()) - surface->VPeriod()) < 1e-6 * surface->VPeriod()) {
+    swap = (b.Y() - a.Y()) * along.X() < 0;
+    shift.SetY(-std::round((std::min(a.Y(), b.Y()) - v0) / surface->VPeriod()) * surface->VPeriod());
+  } else {
+    return;
+  }
+  if (!swap && shift.X() == 0 && shift.Y() == 0) return;
+  Handle(Geom2d_Curve) m1 = Handle(Geom2d_Curve)::DownCast(c1->Translated(shift));
+  Handle(Geom2d_Curve) m2 = Handle(Geom2d_Curve)::DownCast(c2->Translated(shift));
+  if (swap) std::swap(m1, m2);
+  BRep_Builder().UpdateEdge(forwardEdge, m1, m2, face, BRep_Tool::Tolerance(edge));
+  BRep_Builder().Range(forwardEdge, face, first, last);
+}
+
+// Edges of `face` without a pcurve on it (exporters that keep only 3D curves write such faces) get
+// one projected from their 3D curve, as OpenCASCADE's shape healing does: sound, since the 3D curve
+// lies on the surface. Returns the repair for the face's report ("" when none was needed); edges
+// whose projection fails stay without, and the face reports that when it is meshed.
+std::string addMissingPcurves(const TopoDS_Face& face) {
+  const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  TopTools_IndexedDataMapOfShapeListOfShape uses;  // edge -> its occurrences in the face's wires
+  TopExp::MapShapesAndAncestors(forward, TopAbs_EDGE, TopAbs_WIRE, uses);
+  int added = 0;
+  for (int i = 1; i <= uses.Extent(); ++i) {
+    const TopoDS_Edge& edge = TopoDS::Edge(uses.FindKey(i));
+    if (BRep_Tool::Degenerated(edge)) continue;
+    double first = 0, last = 0;
+    if (!BRep_Tool::CurveOnSurface(edge, forward, first, last).IsNull()) continue;
+    int occurrences = 0;
+    for (TopExp_Explorer e(forward, TopAbs_EDGE); e.More(); e.Next()) occurrences += e.Current().IsSame(edge) ? 1 : 0;
+    ShapeFix_Edge fix;
+    fix.FixAddPCurve(edge, forward, occurrences > 1, BRep_Tool::Tolerance(edge));
+    if (BRep_Tool::CurveOnSurface(edge, forward, first, last).IsNull()) continue;
+    ++added;
+    if (occurrences > 1) fixProjectedSeam(edge, forward);
+  }
+  if (added == 0) return {};
+  return "projected the missing pcurve" + std::string(added > 1 ? "s of " + std::to_string(added) + " edges" : " of an edge") +
+         " from the 3D curve";
+}
+
+// A part's box; a face whose wires cannot bound its surface (a pcurve is still missing) can make
+// OpenCASCADE's box infinite, and then the edges' box stands for the part.
+Bounds partBounds(const TopoDS_Shape& shape) {
+  Bounds bounds;
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box, Standard_False);  // the optimal box costs seconds on B-spline models
+  constexpr double kInfinite = 1e99;  // OpenCASCADE's Precision::Infinite() is 2e100
+  if (!box.IsVoid() && !box.IsOpen() && box.SquareExtent() < kInfinite * kInfinite) {
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    bounds.add(x0, y0, z0);
+    bounds.add(x1, y1, z1);
+    if (std::max({std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1), std::abs(y1), std::abs(z1)}) < kInfinite)
+      return bounds;
+  }
+  bounds = Bounds();
+  Bnd_Box edges;
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) BRepBndLib::Add(e.Current(), edges, Standard_False);
+  if (!edges.IsVoid() && !edges.IsOpen()) {
+    double x0, y0, z0, x1, y1, z1;
+    edges.Get(x0, y0, z0, x1, y1, z1);
+    bounds.add(x0, y0, z0);
+    bounds.add(x1, y1, z1);
+  }
+  return bounds;
+}
+
 PartId addPart(ModelImpl& m, const TopoDS_Shape& shape, const std::string& name) {
   PartInfo info;
   info.name = name;
@@ -109,6 +209,7 @@ std::string finalizeModel(ModelImpl& m) {
     }
     for (int i = 1; i <= faceMap.Extent(); ++i) {
       const TopoDS_Face& face = TopoDS::Face(faceMap(i));
+      m.loadRepairs.push_back(addMissingPcurves(face));
       FaceInfo info;
       info.part = p;
       BRepAdaptor_Surface surface(face, Standard_False);
@@ -128,14 +229,7 @@ std::string finalizeModel(ModelImpl& m) {
       m.faceShapes.push_back(face);
       m.faces.push_back(info);
     }
-    Bnd_Box box;
-    BRepBndLib::Add(shape, box, Standard_False);  // the optimal box costs seconds on B-spline models
-    if (!box.IsVoid()) {
-      double x0, y0, z0, x1, y1, z1;
-      box.Get(x0, y0, z0, x1, y1, z1);
-      part.bounds.add(x0, y0, z0);
-      part.bounds.add(x1, y1, z1);
-    }
+    part.bounds = partBounds(shape);
   }
   if (m.faces.empty()) return "no B-rep faces (only points, curves or tessellated geometry)";
   for (const InstanceInfo& inst : m.instances) {

@@ -34,6 +34,7 @@ class ModelImpl {
 
   std::vector<TopoDS_Face> faceShapes;  // by FaceId, with their orientation inside the part
   std::vector<FaceInfo> faces;
+  std::vector<std::string> loadRepairs;  // by FaceId: sound repairs made while loading ("" for none)
   std::vector<TopoDS_Edge> edgeShapes;  // by EdgeId
   std::vector<TopTools_IndexedMapOfShape> partEdgeMaps;  // per part, edge -> 1-based local index
 
