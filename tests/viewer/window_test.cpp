@@ -199,6 +199,25 @@ TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
   EXPECT_NE(log.find("/nonexistent/model.step"), std::string::npos) << log;
 }
 
+// One bad face (a bow-tie wire) is reported by id and reason on the terminal, and the rest of the
+// model shows.
+TEST_F(ViewerWindowTest, BadFaceIsReportedAndTheRestShows) {
+  const std::string script = writeScript("badface.script", "wait level target\nwait frames 2\nquit\n");
+  const std::string shot = outputPath("badface.png");
+  std::remove(shot.c_str());
+  std::string log;
+  const int rc = runViewer(std::string(CETVIEW_HARDENING_CORPUS) +
+                               "/self_intersecting_wire.brep --size 960x600 --validate --frames 3000 --script " +
+                               script + " --screenshot " + shot,
+                           log);
+  ASSERT_EQ(rc, 0) << log;
+  EXPECT_NE(log.find("cetview view: face 7: empty: boundary crosses itself in UV"), std::string::npos) << log;
+  expectWholeLevelShown(log);
+  auto image = engine::readPng(shot);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  EXPECT_GT(modelCoverage(*image), 0.05);
+}
+
 TEST_F(ViewerWindowTest, BadInputIsExitCode2) {
   std::string log;
   EXPECT_EQ(runViewer("view /nonexistent/model.step --frames 2", log), 2) << log;
