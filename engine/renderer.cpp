@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "engine/gpu_structs.h"
 #include "engine/vk_check.h"
@@ -27,6 +28,10 @@ Result<VkFormat> chooseOffscreenFormat(const Device& device) {
 bool isBgr(VkFormat format) {
   return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_B8G8R8A8_UNORM;
 }
+
+// Acquiring a swapchain image waits at most this long; then the frame is skipped (the presentation
+// engine may hold every image for a while, e.g. a hidden window's FIFO; that is no lost device).
+constexpr std::uint64_t kAcquireTimeoutNs = 1'000'000'000ull;
 
 }  // namespace
 
@@ -154,7 +159,8 @@ Status Renderer::createHeadlessTarget(VkExtent2D extent) {
 }
 
 Renderer::~Renderer() {
-  if (device_.device != VK_NULL_HANDLE) vkDeviceWaitIdle(device_.device);
+  // Its result does not matter: a lost device returns at once, and everything is freed either way.
+  if (device_.device != VK_NULL_HANDLE) (void)vkDeviceWaitIdle(device_.device);
   gpuScene_.reset();
   for (auto& r : retired_) destroyBuffer(device_, r.second);
   for (Frame& f : frames_) {
@@ -179,8 +185,47 @@ float Renderer::aspect() const {
 }
 
 Status Renderer::waitIdle() {
-  CETVIEW_VK(vkDeviceWaitIdle(device_.device));
+  if (lost_) return *lost_;
+  Status status = waitDeviceIdle();
+  if (!status) noteLoss(status.error());
+  return status;
+}
+
+Status Renderer::waitDeviceIdle() {
+  // Every submission signals its frame's fence: wait for them with a time limit first, so a hung
+  // device becomes an error instead of blocking vkDeviceWaitIdle forever.
+  std::vector<VkFence> fences;
+  for (const Frame& f : frames_) {
+    if (f.inFlight) fences.push_back(f.fence);
+  }
+  if (!fences.empty()) CETVIEW_TRY(waitFences(fences.data(), static_cast<std::uint32_t>(fences.size())));
+  for (Frame& f : frames_) f.inFlight = false;
+  if (VkResult r = deviceResult(vkDeviceWaitIdle(device_.device)); r != VK_SUCCESS) {
+    return vkError("vkDeviceWaitIdle", r);
+  }
   return {};
+}
+
+VkResult Renderer::deviceResult(VkResult real) {
+  if (!simulateLoss_) return real;
+  simulateLoss_ = false;
+  return VK_ERROR_DEVICE_LOST;
+}
+
+Status Renderer::waitFences(const VkFence* fences, std::uint32_t count) {
+  VkResult r = deviceResult(vkWaitForFences(device_.device, count, fences, VK_TRUE, kHangTimeoutNs));
+  if (r == VK_TIMEOUT) {
+    return makeError(ErrorCode::kDeviceLost,
+                     "the Vulkan device was lost (no frame finished in " +
+                         std::to_string(kHangTimeoutNs / 1'000'000'000ull) +
+                         " s: VK_TIMEOUT in vkWaitForFences): the device or its driver hung");
+  }
+  if (r != VK_SUCCESS) return vkError("vkWaitForFences", r);
+  return {};
+}
+
+void Renderer::noteLoss(const Error& error) {
+  if (error.code == ErrorCode::kDeviceLost && !lost_) lost_ = error;
 }
 
 void Renderer::destroySwapchainResources() {
@@ -191,7 +236,7 @@ void Renderer::destroySwapchainResources() {
 
 Status Renderer::recreateSwapchain(VkExtent2D framebuffer, bool* minimised) {
   *minimised = false;
-  CETVIEW_VK(vkDeviceWaitIdle(device_.device));
+  CETVIEW_TRY(waitDeviceIdle());
   auto extent = surfaceExtent(device_, surface_, framebuffer);
   CETVIEW_TRY(extent);
   if (extent->width == 0 || extent->height == 0) {
@@ -245,7 +290,10 @@ Result<bool> Renderer::prepareSwapchain() {
 }
 
 Status Renderer::waitForFrame(Frame& frame) {
-  CETVIEW_VK(vkWaitForFences(device_.device, 1, &frame.fence, VK_TRUE, UINT64_MAX));
+  // A frame whose submission failed (or never happened) has no fence to wait for: waiting on its
+  // reset fence would only time out.
+  if (frame.inFlight) CETVIEW_TRY(waitFences(&frame.fence, 1));
+  frame.inFlight = false;
   // Frames are waited in submission order, so every serial up to this one has finished.
   ring_.release(frame.ringMark);
   while (!retired_.empty() && retired_.front().first <= frame.serial) {
@@ -338,11 +386,11 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
     CETVIEW_TRY(ready);
     VkResult r = VK_ERROR_OUT_OF_DATE_KHR;
     if (*ready) {
-      r = vkAcquireNextImageKHR(device_.device, swapchain_.swapchain, UINT64_MAX, frame.acquired,
+      r = vkAcquireNextImageKHR(device_.device, swapchain_.swapchain, kAcquireTimeoutNs, frame.acquired,
                                 VK_NULL_HANDLE, &imageIndex);
       if (r == VK_ERROR_OUT_OF_DATE_KHR) needRecreate_ = true;
     }
-    if (r == VK_ERROR_OUT_OF_DATE_KHR) {
+    if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_TIMEOUT || r == VK_NOT_READY) {
       present = false;
       camera = nullptr;
     } else if (r == VK_SUBOPTIMAL_KHR) {
@@ -440,7 +488,10 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
     submit.signalSemaphoreCount = 1;
     submit.pSignalSemaphores = &renderDone_[imageIndex];
   }
-  CETVIEW_VK(vkQueueSubmit(device_.queue, 1, &submit, frame.fence));
+  if (VkResult r = deviceResult(vkQueueSubmit(device_.queue, 1, &submit, frame.fence)); r != VK_SUCCESS) {
+    return vkError("vkQueueSubmit", r);
+  }
+  frame.inFlight = true;
   ++frameIndex_;
   if (!uploaded) {
     if (present) needRecreate_ = true;  // the acquired image was not drawn: start from a fresh swapchain
@@ -465,17 +516,29 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
 }
 
 Result<FrameStatus> Renderer::drawFrame(const Camera& camera, const ViewStyle& style) {
-  return runFrame(&camera, &style, false);
+  if (lost_) return *lost_;
+  auto status = runFrame(&camera, &style, false);
+  if (!status) noteLoss(status.error());
+  return status;
 }
 
 Result<RgbaImage> Renderer::capture(const Camera& camera, const ViewStyle& style) {
+  if (lost_) return *lost_;
+  auto image = captureFrame(camera, style);
+  if (!image) noteLoss(image.error());
+  return image;
+}
+
+Result<RgbaImage> Renderer::captureFrame(const Camera& camera, const ViewStyle& style) {
   Frame& frame = frames_[frameIndex_ % frames_.size()];
   auto status = runFrame(&camera, &style, true);
   CETVIEW_TRY(status);
   if (*status == FrameStatus::kSkipped) {
-    return makeError(ErrorCode::kUnsupported, "the window frame was skipped (minimised or out of date)");
+    return makeError(ErrorCode::kUnsupported,
+                     "the window frame was skipped (minimised, out of date, or no image in time)");
   }
-  CETVIEW_VK(vkWaitForFences(device_.device, 1, &frame.fence, VK_TRUE, UINT64_MAX));
+  CETVIEW_TRY(waitFences(&frame.fence, 1));
+  frame.inFlight = false;
   CETVIEW_TRY(invalidateForHost(device_, readback_));
 
   RgbaImage image;
@@ -491,8 +554,10 @@ Result<RgbaImage> Renderer::capture(const Camera& camera, const ViewStyle& style
 }
 
 Status Renderer::finishUploads() {
+  if (lost_) return *lost_;
   while (scene_.uploadsPending()) {
     auto status = runFrame(nullptr, nullptr, false);
+    if (!status) noteLoss(status.error());
     CETVIEW_TRY(status);
     if (lastUpload_.bytes == 0 && lastUpload_.facesCompleted == 0 && lastUpload_.edgesCompleted == 0 &&
         scene_.uploadsPending()) {

@@ -6,12 +6,18 @@
 // `uploadBudgetBytes` of the Scene's changes (the rest waits for later frames; a face keeps showing
 // its previous triangles until its new ones are complete), records background, faces and edges,
 // and submits (and presents, in a window). Not thread-safe: one thread drives a Renderer.
+//
+// A lost device (VK_ERROR_DEVICE_LOST from any call, or a frame the device has not finished after
+// kHangTimeoutNs) is final: the call that meets it returns a kDeviceLost error, and every later
+// drawFrame(), capture(), finishUploads() and waitIdle() returns that same error at once without
+// touching the device. Only destroying the Renderer (and the Device) is left to do.
 #pragma once
 
 #include <cstdint>
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -46,7 +52,8 @@ struct RendererOptions {
 
 enum class FrameStatus {
   kRendered,
-  kSkipped,  // window minimised (0x0), or the swapchain was out of date and is recreated next frame
+  kSkipped,  // window minimised (0x0), the swapchain was out of date (recreated next frame), or the
+             // presentation engine gave no image within a second
 };
 
 class Renderer {
@@ -64,7 +71,7 @@ class Renderer {
   static Result<std::unique_ptr<Renderer>> createWindowed(const Device& device, VkSurfaceKHR surface,
                                                           FramebufferSizeFn framebufferSize,
                                                           const RendererOptions& options = {});
-  // Waits for the device to finish, then frees everything.
+  // Waits for the device to finish (a lost device returns at once), then frees everything.
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -74,13 +81,14 @@ class Renderer {
 
   // Uploads (within the budget) and draws one frame. A skipped frame (minimised, swapchain out of
   // date) still uploads, so streaming goes on. Errors: kUnsupported (wireframe without
-  // fillModeNonSolid), kDeviceLost, kSurfaceLost, kOutOfMemory, kVulkan.
+  // fillModeNonSolid), kDeviceLost (for good: see the top of this file), kSurfaceLost,
+  // kOutOfMemory, kVulkan.
   Result<FrameStatus> drawFrame(const Camera& camera, const ViewStyle& style = {});
 
   // Draws one frame and returns its pixels (waits for it); call finishUploads() first for a
   // picture of the whole scene. In a window the frame is also presented, overlay included.
   // Errors: kUnsupported (the surface's images cannot be copied from, or the frame was skipped:
-  // minimised or out of date; try again next frame), and drawFrame()'s.
+  // minimised, out of date or no image in time; try again next frame), and drawFrame()'s.
   Result<RgbaImage> capture(const Camera& camera, const ViewStyle& style = {});
 
   // Extra commands recorded inside each frame's render pass (its only subpass), after the model:
@@ -96,7 +104,20 @@ class Renderer {
   // Submits upload-only frames (same budget each) until the Scene has nothing pending, then waits.
   Status finishUploads();
 
+  // Waits until every submitted frame has finished (at most kHangTimeoutNs per wait). Errors:
+  // kDeviceLost.
   Status waitIdle();
+
+  // Whether the device was lost (see the top of this file); the renderer only draws errors then.
+  bool deviceLost() const { return lost_.has_value(); }
+  // A wait for the device that lasts this long (60 s) means the device is hung: treated as lost.
+  static constexpr std::uint64_t kHangTimeoutNs = 60'000'000'000ull;
+
+  // TEST ONLY (fault injection; lavapipe never loses its device): the next queue submission, fence
+  // wait or device wait the renderer checks reports VK_ERROR_DEVICE_LOST instead of its real
+  // result, and the renderer is lost from then on as after a real loss. The call itself still
+  // runs, so the real device stays usable and destruction is a real cleanup.
+  void simulateDeviceLossForTesting() { simulateLoss_ = true; }
 
   bool headless() const { return surface_ == VK_NULL_HANDLE; }
   VkExtent2D extent() const { return extent_; }  // of the last frame's target (window: swapchain)
@@ -126,6 +147,7 @@ class Renderer {
     VkBuffer boundFaces = VK_NULL_HANDLE;  // the face colour buffer the set points at
     std::uint64_t serial = 0;              // of the last submission that used this frame
     std::uint64_t ringMark = 0;            // upload ring position after that submission
+    bool inFlight = false;                 // submitted, its fence not yet waited for
   };
 
   Renderer(const Device& device, const RendererOptions& options);
@@ -136,9 +158,18 @@ class Renderer {
   Result<bool> prepareSwapchain();
   Status recreateSwapchain(VkExtent2D framebuffer, bool* minimised);
   void destroySwapchainResources();
+  // The result of a submission or wait as the renderer sees it: `real`, or VK_ERROR_DEVICE_LOST
+  // once after simulateDeviceLossForTesting().
+  VkResult deviceResult(VkResult real);
+  // Waits for `fences` (all of them) for at most kHangTimeoutNs; a timeout is a kDeviceLost error.
+  Status waitFences(const VkFence* fences, std::uint32_t count);
+  Status waitDeviceIdle();  // every frame's fence, then vkDeviceWaitIdle
+  // Remembers a kDeviceLost error: the renderer is lost from now on.
+  void noteLoss(const Error& error);
   Status waitForFrame(Frame& frame);
   // One frame: with `camera` null, uploads only; with `capture`, also copies the image to readback_.
   Result<FrameStatus> runFrame(const Camera* camera, const ViewStyle* style, bool capture);
+  Result<RgbaImage> captureFrame(const Camera& camera, const ViewStyle& style);  // capture() itself
   void writeGlobals(Frame& frame, const ViewStyle& style);
   void updateDescriptors(Frame& frame);
   void recordRenderPass(Frame& frame, VkFramebuffer framebuffer, const Camera& camera,
@@ -173,6 +204,9 @@ class Renderer {
   std::vector<VkSemaphore> renderDone_;    // one per swapchain image
   bool needRecreate_ = true;
   std::uint32_t recreations_ = 0;
+
+  std::optional<Error> lost_;  // the error that lost the device; returned by every later call
+  bool simulateLoss_ = false;  // simulateDeviceLossForTesting() is pending
 };
 
 }  // namespace cetview::engine

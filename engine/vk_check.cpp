@@ -71,6 +71,10 @@ Error vkError(const char* call, VkResult result) {
     default:
       break;
   }
+  if (code == ErrorCode::kDeviceLost) {
+    return Error{code, "the Vulkan device was lost (VK_ERROR_DEVICE_LOST in " + name +
+                           "): the driver reset or crashed"};
+  }
   return Error{code, name + " failed: " + vkResultName(result)};
 }
 

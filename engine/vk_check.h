@@ -21,7 +21,8 @@ const char* vkResultName(VkResult result);
 
 // An Error for a failed call: "vkCreateBuffer failed: VK_ERROR_OUT_OF_DEVICE_MEMORY". `call` may be
 // the whole call expression; it is cut at the first '('. The code follows the result (memory, lost
-// device, lost surface, else kVulkan).
+// device, lost surface, else kVulkan). A lost device reads "the Vulkan device was lost
+// (VK_ERROR_DEVICE_LOST in vkQueueSubmit): the driver reset or crashed".
 Error vkError(const char* call, VkResult result);
 
 }  // namespace cetview::engine

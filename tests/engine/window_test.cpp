@@ -203,6 +203,42 @@ TEST_F(WindowTest, ResizeMinimiseAndOutOfDateSwapchains) {
   ASSERT_TRUE(r.waitIdle().ok());
 }
 
+// A device lost in the middle of the frame loop (simulated: lavapipe never loses it): the frame
+// returns kDeviceLost, every later call the same error, and the swapchain, its semaphores and the
+// overlay's frames are torn down cleanly (validation layer on).
+TEST_F(WindowTest, DeviceLossMidLoopEndsWithAnErrorAndCleanTeardown) {
+  ASSERT_NE(surface_, VK_NULL_HANDLE);
+  auto created = Renderer::createWindowed(device_, surface_, [this] { return framebuffer_; });
+  ASSERT_TRUE(created.ok()) << created.error().message;
+  renderer_ = std::move(*created);
+  Renderer& r = *renderer_;
+  ASSERT_TRUE(addMesh(r.scene(), cube()).ok());
+  Camera camera = standardView(StandardView::kIso, r.scene().bounds(), 320.0f / 240.0f);
+  int overlayCalls = 0;
+  r.setOverlay([&overlayCalls](VkCommandBuffer) { ++overlayCalls; });
+  for (int i = 0; i < 3; ++i) drawUntilRendered(r, camera);
+  EXPECT_GE(overlayCalls, 3);
+
+  r.simulateDeviceLossForTesting();
+  auto lost = r.drawFrame(camera);
+  ASSERT_FALSE(lost.ok());
+  EXPECT_EQ(lost.error().code, ErrorCode::kDeviceLost) << lost.error().message;
+  EXPECT_NE(lost.error().message.find("the Vulkan device was lost"), std::string::npos)
+      << lost.error().message;
+  EXPECT_TRUE(r.deviceLost());
+  const int callsAtLoss = overlayCalls;
+  for (int i = 0; i < 3; ++i) {
+    auto again = r.drawFrame(camera);
+    ASSERT_FALSE(again.ok());
+    EXPECT_EQ(again.error().message, lost.error().message);
+  }
+  auto image = r.capture(camera);
+  ASSERT_FALSE(image.ok());
+  EXPECT_EQ(image.error().code, ErrorCode::kDeviceLost);
+  EXPECT_FALSE(r.waitIdle().ok());
+  EXPECT_EQ(overlayCalls, callsAtLoss);  // nothing more was recorded
+}
+
 // The overlay hook records inside the frame's render pass after the model (the viewer's ImGui
 // panels), and capture() of a window reads back the presented image, overlay included.
 TEST_F(WindowTest, OverlayIsDrawnOverTheModelAndCaptured) {
