@@ -12,6 +12,7 @@
 #include "brep/tessellator.h"
 #include "brep/tolerance.h"
 #include "commands.h"
+#include "device_loss.h"
 #include "face_problems.h"
 #include "engine/camera.h"
 #include "engine/context.h"
@@ -123,7 +124,7 @@ int runRender(const RenderCli& cli) {
   if (!device) return fail(1, device.error().message);
   session.device = *device;
   auto renderer = engine::Renderer::createHeadless(session.device, {width, height});
-  if (!renderer) return fail(1, renderer.error().message);
+  if (!renderer) return fail(1, engineErrorLine(renderer.error()));
   session.renderer = std::move(*renderer);
   engine::Renderer& r = *session.renderer;
 
@@ -137,6 +138,7 @@ int runRender(const RenderCli& cli) {
   consumer.setShowLevel(next, link);
   const engine::Camera camera = engine::standardView(*view, link.bounds(), r.aspect(), projection);
 
+  std::uint64_t pictures = 0;  // captured so far
   ProgressBar bar("render " + cli.model);
   const auto deadline = loadedAt + std::chrono::hours(2);
   while (next <= last) {
@@ -150,9 +152,10 @@ int runRender(const RenderCli& cli) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       continue;
     }
-    if (auto s = r.finishUploads(); !s) return fail(1, s.error().message);
+    simulateDeviceLossIfRequested(r, pictures++);
+    if (auto s = r.finishUploads(); !s) return fail(1, engineErrorLine(s.error()));
     auto image = r.capture(camera, style);
-    if (!image) return fail(1, image.error().message);
+    if (!image) return fail(1, engineErrorLine(image.error()));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadedAt).count();
     const stream::LevelStat& stat = consumer.levelStats()[static_cast<std::size_t>(next)];
     if (cli.levels) {

@@ -23,6 +23,7 @@
 #include "brep/tolerance.h"
 #include "camera_controller.h"
 #include "commands.h"
+#include "device_loss.h"
 #include "engine/camera.h"
 #include "engine/image.h"
 #include "engine/renderer.h"
@@ -831,6 +832,7 @@ int Viewer::run() {
     if (lastFrame && !cli_.screenshot.empty()) shot = cli_.screenshot;
     engine::ViewStyle style = style_;
     if (heatMap_) style.fileColors = true;  // the heat colours are face colours
+    simulateDeviceLossIfRequested(r_, frame_);
     if (!shot.empty()) {
       auto image = r_.capture(camera_.camera(), style);
       if (image) {
@@ -847,6 +849,8 @@ int Viewer::run() {
                  image.error().message.find("skipped") != std::string::npos) {
         ++extraFrames;  // an out-of-date frame: try again on the next one
         continue;
+      } else if (image.error().code == engine::ErrorCode::kDeviceLost) {
+        return fail(1, engineErrorLine(image.error()));
       } else {
         pendingScreenshot_.clear();
         status_ = image.error().message;
@@ -854,12 +858,12 @@ int Viewer::run() {
       }
     } else {
       auto status = r_.drawFrame(camera_.camera(), style);
-      if (!status) return fail(1, status.error().message);
+      if (!status) return fail(1, engineErrorLine(status.error()));
     }
     ++frame_;
     if (lastFrame) break;
   }
-  if (auto s = r_.waitIdle(); !s) return fail(1, s.error().message);
+  if (auto s = r_.waitIdle(); !s) return fail(1, engineErrorLine(s.error()));
   if (exitCode_ != 0) return exitCode_;
   {
     // One line for scripts and tests: what the window showed at the end.

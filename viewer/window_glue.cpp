@@ -182,10 +182,12 @@ std::string WindowGlue::init(const WindowOptions& options) {
 }
 
 WindowGlue::~WindowGlue() {
-  if (renderer_) {
-    (void)renderer_->waitIdle();
-    renderer_->setOverlay({});
-  }
+  // The last frames may still read ImGui's buffers: wait for them before ImGui frees them. Not with
+  // Renderer::waitIdle(), which returns at once once the device is lost (and the loss may be
+  // simulated, the real device still busy); a really lost device ends this wait at once, and its
+  // result does not matter here.
+  if (device_.device) (void)vkDeviceWaitIdle(device_.device);
+  if (renderer_) renderer_->setOverlay({});
   if (imguiVulkan_) ImGui_ImplVulkan_Shutdown();
   if (imguiGlfw_) ImGui_ImplGlfw_Shutdown();
   if (imguiContext_) ImGui::DestroyContext();

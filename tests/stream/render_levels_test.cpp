@@ -68,6 +68,42 @@ TEST(RenderLevels, DemoSharpensLevelByLevelAndMatchesGolden) {
   cetview::test::expectMatchesGolden(*final, "demo_levels_final");
 }
 
+// A lost Vulkan device (simulated through the viewer's test hook, as lavapipe never loses it) ends
+// the run with exit code 1 and exactly one line on stderr that says so, validation-clean.
+CliResult runLosingDeviceAt(int picture, const std::string& args) {
+  const std::string err = std::string(CETVIEW_TEST_OUTPUT_DIR) + "/device_loss.err";
+  return cetview::test::runCommand("CETVIEW_TEST_DEVICE_LOSS_AT_FRAME=" + std::to_string(picture) + " " +
+                                       std::string(CETVIEW_EXE) + " " + args,
+                                   err);
+}
+
+void expectOneDeviceLostLine(const CliResult& r) {
+  EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not exactly one line:\n" << r.err;
+  EXPECT_EQ(r.err.rfind("cetview render: the Vulkan device was lost (VK_ERROR_DEVICE_LOST in ", 0), 0u)
+      << r.err;
+  EXPECT_NE(r.err.find("; restart cetview (or pick another device with --device)\n"), std::string::npos)
+      << r.err;
+  // Nothing from the validation layer (it prints "vulkan: Validation Error: ...").
+  EXPECT_EQ(r.err.find("vulkan:"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("Validation"), std::string::npos) << r.err;
+}
+
+TEST(RenderLevels, DeviceLossEndsWithOneLineAndExitCodeOne) {
+  std::system(("mkdir -p " + std::string(CETVIEW_TEST_OUTPUT_DIR)).c_str());
+  const std::string out = std::string(CETVIEW_TEST_OUTPUT_DIR) + "/device_loss.png";
+  std::remove(out.c_str());
+  CliResult r = runLosingDeviceAt(0, "render demo -o " + out + " --size 160x120 --threads 2 --validate");
+  expectOneDeviceLostLine(r);
+  EXPECT_FALSE(cetview::engine::readPng(out).ok()) << "no picture after the loss";
+
+  // Lost at the third picture of --levels: the first two were written.
+  r = runLosingDeviceAt(2, "render demo -o " + out + " --levels --size 160x120 --threads 2 --validate");
+  expectOneDeviceLostLine(r);
+  EXPECT_EQ(parseLines(r.out).size(), 2u) << r.out;
+}
+
 TEST(RenderLevels, BadInputExitsTwo) {
   EXPECT_EQ(run("render /nonexistent/model.step -o /tmp/x.png 2>/dev/null").exitCode, 2);
   EXPECT_EQ(run("render demo -o /tmp/x.png --size 10x10 2>/dev/null").exitCode, 2);

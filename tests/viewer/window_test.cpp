@@ -42,21 +42,31 @@ std::string writeScript(const std::string& name, const std::string& text) {
   return path;
 }
 
-// Runs `cetview ARGS` in a fresh X server; returns the exit code, with stdout+stderr in `log`.
-int runViewer(const std::string& args, std::string& log) {
+// Runs `cetview ARGS` in a fresh X server; returns the exit code, with stdout+stderr in `log`, or
+// with `err` given, stdout in `log` and stderr in `*err`. `env` ("NAME=value ...") prefixes the run.
+int runViewer(const std::string& args, std::string& log, std::string* err = nullptr,
+              const std::string& env = {}) {
   const std::string logPath =
       outputPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
-  const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) + " " +
-                              args + " > " + logPath + " 2>&1";
+  const std::string errPath = logPath + ".err";
+  const std::string command = env + " xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) +
+                              " " + args + " > " + logPath + (err ? " 2>" + errPath : " 2>&1");
   int code = -1;
   // xvfb-run -a can race another test's server for a display number: try again then.
   for (int attempt = 0; attempt < 3; ++attempt) {
     const int status = std::system(command.c_str());
     std::ifstream in(logPath);
     log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    std::string errors;
+    if (err) {
+      std::ifstream errIn(errPath);
+      err->assign(std::istreambuf_iterator<char>(errIn), std::istreambuf_iterator<char>());
+      errors = *err;
+    }
     code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    if (log.find("xvfb-run: error") == std::string::npos &&
-        log.find("Server is already active") == std::string::npos)
+    const std::string all = log + errors;
+    if (all.find("xvfb-run: error") == std::string::npos &&
+        all.find("Server is already active") == std::string::npos)
       break;
   }
   return code;
@@ -216,6 +226,33 @@ TEST_F(ViewerWindowTest, BadFaceIsReportedAndTheRestShows) {
   auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   EXPECT_GT(modelCoverage(*image), 0.05);
+}
+
+// A lost Vulkan device mid-loop (simulated through the viewer's test hook: lavapipe never loses
+// it) ends the window with exit code 1 and exactly one line on stderr that says so; the teardown
+// (ImGui's Vulkan backend, swapchain, device) is validation-clean and does not crash.
+TEST_F(ViewerWindowTest, DeviceLossEndsWithOneLineAndExitCodeOne) {
+  const std::string shot = outputPath("device_loss.png");
+  // Lost in a drawn frame, then in the capture of the last frame (--screenshot).
+  for (const bool screenshot : {false, true}) {
+    std::string out, err;
+    std::string args = "view demo --size 640x400 --validate --frames 20 --threads 2";
+    if (screenshot) args += " --screenshot " + shot;
+    std::remove(shot.c_str());
+    const std::string env = std::string("CETVIEW_TEST_DEVICE_LOSS_AT_FRAME=") + (screenshot ? "19" : "5");
+    const int rc = runViewer(args, out, &err, env);
+    EXPECT_EQ(rc, 1) << out << err;
+    ASSERT_FALSE(err.empty()) << out;
+    EXPECT_EQ(err.find('\n'), err.size() - 1) << "not exactly one line:\n" << err;
+    EXPECT_EQ(err.rfind("cetview view: the Vulkan device was lost (VK_ERROR_DEVICE_LOST in ", 0), 0u) << err;
+    EXPECT_NE(err.find("; restart cetview (or pick another device with --device)\n"), std::string::npos)
+        << err;
+    // Nothing from the validation layer (it prints "vulkan: Validation Error: ...").
+    EXPECT_EQ(err.find("vulkan:"), std::string::npos) << err;
+    EXPECT_EQ(err.find("Validation"), std::string::npos) << err;
+    EXPECT_EQ(out.find("\"frames\":"), std::string::npos) << "the closing line of a clean run:\n" << out;
+    EXPECT_NE(access(shot.c_str(), F_OK), 0) << "no screenshot after the loss";
+  }
 }
 
 TEST_F(ViewerWindowTest, BadInputIsExitCode2) {
