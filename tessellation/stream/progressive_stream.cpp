@@ -177,8 +177,10 @@ void ProgressiveStream::publishFace(RecordWriter& writer, std::vector<std::uint8
       v->normal[c] = mesh.normals[3 * i + static_cast<std::uint32_t>(c)];
     }
   }
-  std::memcpy(buffer.data() + sizeof h + h.vertexCount * sizeof(StreamVertex), indices.data(),
-              indices.size() * sizeof(std::uint32_t));
+  if (!indices.empty()) {  // an empty face (nothing could mesh it) has no index array at all
+    std::memcpy(buffer.data() + sizeof h + h.vertexCount * sizeof(StreamVertex), indices.data(),
+                indices.size() * sizeof(std::uint32_t));
+  }
   if (writer.write(buffer.data(), buffer.size(), kFaceLevel, [this] { return waitForSpace(); })) {
     sentVertices = end;
   }

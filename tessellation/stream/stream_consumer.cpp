@@ -104,7 +104,7 @@ void StreamConsumer::showEdges(MeshSink& sink) {
     const std::size_t bytes = std::size_t{entry[1]} * 3 * sizeof(float);
     if (at + bytes > data.size()) return;  // corrupt: stop rather than read past the record
     xyz.resize(std::size_t{entry[1]} * 3);
-    std::memcpy(xyz.data(), data.data() + at, bytes);
+    if (bytes > 0) std::memcpy(xyz.data(), data.data() + at, bytes);
     at += bytes;
     sink.setEdgePolyline(entry[0], xyz.data(), entry[1]);
   }
@@ -134,8 +134,10 @@ void StreamConsumer::apply(const std::uint8_t* data, std::size_t size, MeshSink&
     face.localCount += count;
   }
   std::vector<std::uint32_t> indices(h.indexCount);
-  std::memcpy(indices.data(), data + sizeof h + std::size_t{h.vertexCount} * sizeof(StreamVertex),
-              indices.size() * sizeof(std::uint32_t));
+  if (!indices.empty()) {
+    std::memcpy(indices.data(), data + sizeof h + std::size_t{h.vertexCount} * sizeof(StreamVertex),
+                indices.size() * sizeof(std::uint32_t));
+  }
   for (std::uint32_t& i : indices) {
     if (i >= face.localCount) return;  // corrupt record: never index outside the shared array
     const auto it = std::upper_bound(face.segments.begin(), face.segments.end(), i,
