@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -113,6 +115,35 @@ TEST(HardCases, PeriodicBSpline) {
   ASSERT_TRUE(surface->IsUPeriodic());
   const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
   checkAtSeveralDeflections(face, "periodic_bspline");
+}
+
+// A B-spline sheet over [0, 40] x [0, 50]: cubic in u, degree 1 in v through `heights` (one row of
+// poles per height, 10 apart); v knots at `vKnots` (one per row, the ends doubled).
+TopoDS_Face bsplineSheet(const std::vector<double>& heights, const std::vector<double>& vKnotValues) {
+  const int nu = 4, nv = static_cast<int>(heights.size());
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  for (int i = 1; i <= nu; ++i)
+    for (int j = 1; j <= nv; ++j)
+      poles.SetValue(i, j, gp_Pnt(40.0 * (i - 1) / (nu - 1), 10.0 * (j - 1), heights[j - 1] + 2 * std::sin(i + j)));
+  TColStd_Array1OfReal uKnots(1, 2), vKnots(1, nv);
+  TColStd_Array1OfInteger uMults(1, 2), vMults(1, nv);
+  uKnots(1) = 0, uKnots(2) = 1, uMults(1) = uMults(2) = 4;
+  for (int j = 1; j <= nv; ++j) vKnots(j) = vKnotValues[j - 1], vMults(j) = (j == 1 || j == nv) ? 2 : 1;
+  Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 1);
+  return BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
+}
+
+TEST(HardCases, CreasedBSpline) {
+  // A corrugated sheet: degree 1 across the folds, so every interior v knot is a crease of about
+  // 80 degrees. Corner normals differ across a crease however small the triangles: the angle test
+  // must not split along it down to the minimum size (which took ~100x the triangles).
+  const TopoDS_Face face = bsplineSheet({0, 8, 0, 8, 0, 8}, {0, 1, 2, 3, 4, 5});
+  checkAtSeveralDeflections(face, "creased_bspline");
+  auto model = test::loadShape(face, "creased_bspline_count");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.001), test::finalLevelOnly());
+  ASSERT_TRUE(t);
+  std::printf("creased sheet at 0.1%%: %zu triangles\n", t->triangleCount(t->lastLevel()));
 }
 
 TEST(HardCases, PlateWithHundredHoles) {

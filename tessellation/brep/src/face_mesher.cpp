@@ -383,9 +383,17 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
 
   // Regularity: corner normals. Poles and apexes have no meaningful normal to compare, and the two
   // ends of a boundary segment are fixed by the edge discretisation: no interior point changes them.
+  // Nor does any point change the normals' jump across a crease of the surface: an edge across one
+  // is left to the chordal test (splitting it for the angle would go on down to the minimum size
+  // all along the crease).
   double maxAngle = 0;
+  bool acrossCrease = false;
   for (int i = 0; i < 3; ++i) {
     const cet::VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
+    if (eval_.crossesCrease(U[(i + 1) % 3], V[(i + 1) % 3], U[(i + 2) % 3], V[(i + 2) % 3])) {
+      acrossCrease = true;
+      continue;
+    }
     if (singular_[a] || singular_[b] || m.isConstrained(t, i)) continue;
     const double angle = normal_[a].Angle(normal_[b]);
     if (angle > maxAngle) maxAngle = angle, r.angleEdge = static_cast<std::uint8_t>(i);
@@ -399,7 +407,7 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
   if (n.Magnitude() <= 1e-12 * longest * longest) {  // the measure's notion of no area (brep/measure.h)
     r.flags |= TriangleRecord::kFlipped;
-  } else if (ref.Magnitude() > 0) {
+  } else if (ref.Magnitude() > 0 && !acrossCrease) {  // corner normals from both sides of a crease: no reference
     r.facetCos = static_cast<float>(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()));
   }
 }

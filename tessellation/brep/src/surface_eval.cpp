@@ -6,6 +6,8 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
 
 namespace cetview::brep {
 
@@ -64,7 +66,52 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   }
   if (!(su > 0) || !std::isfinite(su)) su = 1;
   if (!(sv > 0) || !std::isfinite(sv)) sv = 1;
+
+  // Creases: the ends of the surface's C1 intervals inside its parameter range; a periodic
+  // direction's seam as well where the surface has any crease in that direction (its seam knot is
+  // then as likely C0 as the others; a seam wrongly taken for a crease only skips angle tests
+  // there, which the chordal test still covers).
+  auto creases = [&](bool uDir, std::vector<double>& out) {
+    const int count = uDir ? surface_.NbUIntervals(GeomAbs_C1) : surface_.NbVIntervals(GeomAbs_C1);
+    if (count < 2 || count > 100000) return;
+    TColStd_Array1OfReal t(1, count + 1);
+    if (uDir) {
+      surface_.UIntervals(t, GeomAbs_C1);
+    } else {
+      surface_.VIntervals(t, GeomAbs_C1);
+    }
+    const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
+    for (int i = periodic ? 1 : 2; i <= count; ++i) out.push_back(t(i));
+    std::sort(out.begin(), out.end());
+  };
+  try {
+    creases(true, uCreases_);
+    creases(false, vCreases_);
+  } catch (const Standard_Failure&) {
+    uCreases_.clear(), vCreases_.clear();
+  }
+  if (uPeriodic_ && !uCreases_.empty()) uPeriod_ = surface_.UPeriod();
+  if (vPeriodic_ && !vCreases_.empty()) vPeriod_ = surface_.VPeriod();
 }
+
+bool SurfaceEval::crosses(const std::vector<double>& creases, double period, double a, double b) {
+  if (creases.empty() || a == b) return false;
+  if (a > b) std::swap(a, b);
+  if (period > 0) {
+    // Bring a into the first period of the crease list; b keeps its distance to it.
+    const double k = std::floor((a - creases.front()) / period);
+    a -= k * period, b -= k * period;
+    if (b - a >= period) return true;
+  }
+  // A crease c with a <= c <= b, within this period or (periodic) the next.
+  for (double shift : {0.0, period}) {
+    const auto it = std::lower_bound(creases.begin(), creases.end(), a - shift);
+    if (it != creases.end() && *it + shift <= b) return true;
+    if (period == 0) break;
+  }
+  return false;
+}
+
 
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;

@@ -3,6 +3,8 @@
 // thread: the adaptor caches B-spline spans.
 #pragma once
 
+#include <vector>
+
 #include <BRepAdaptor_Surface.hxx>
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
@@ -37,17 +39,29 @@ class SurfaceEval {
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
   // shapes about as in 3D.
   double u0 = 0, v0 = 0, su = 1, sv = 1;
+
+  // True when a crease (a parameter line where the surface is not C1: a B-spline knot of full
+  // multiplicity, the seam of a periodic surface that is C0 there, a C0 swept curve) lies between
+  // (ua, va) and (ub, vb), or one of them is on it and the other is not. Normals on either side of a
+  // crease differ by its angle however close the points are: no refinement can bring them together.
+  bool crossesCrease(double ua, double va, double ub, double vb) const {
+    return crosses(uCreases_, uPeriod_, ua, ub) || crosses(vCreases_, vPeriod_, va, vb);
+  }
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
  private:
   double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
                      double settle = 1e-3) const;
 
+  static bool crosses(const std::vector<double>& creases, double period, double a, double b);
+
   BRepAdaptor_Surface surface_;
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
   double meanLu_ = 0, meanLv_ = 0;                 // mean |Su|, |Sv| over the face
+  std::vector<double> uCreases_, vCreases_;        // parameters of the crease lines, increasing
+  double uPeriod_ = 0, vPeriod_ = 0;               // 0 unless periodic: creases repeat with it
 };
 
 }  // namespace cetview::brep
