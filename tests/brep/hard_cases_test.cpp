@@ -146,6 +146,20 @@ TEST(HardCases, CreasedBSpline) {
   std::printf("creased sheet at 0.1%%: %zu triangles\n", t->triangleCount(t->lastLevel()));
 }
 
+TEST(HardCases, UnevenKnotSpans) {
+  // A step: the sheet rises by 30 within a v span 1e-4 as long as its neighbours (nearly repeated
+  // knots). With one UV scale for the face the step is a sliver 1e-4 wide in the scaled plane, where
+  // Delaunay triangles across it are slivers in 3D (this took 2M triangles and 14 minutes, with
+  // flipped ones); with a scale per span it is as wide as in 3D.
+  const TopoDS_Face face = bsplineSheet({0, 0, 30, 30}, {0, 1, 1.0001, 2});
+  checkAtSeveralDeflections(face, "uneven_knots");
+  auto model = test::loadShape(face, "uneven_knots_count");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.001), test::finalLevelOnly());
+  ASSERT_TRUE(t);
+  std::printf("uneven knots at 0.1%%: %zu triangles\n", t->triangleCount(t->lastLevel()));
+}
+
 TEST(HardCases, PlateWithHundredHoles) {
   // A 200 x 200 plate, 20 thick, with a 10 x 10 grid of holes: a closed solid.
   BRepBuilderAPI_MakeFace maker(BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(200, 0, 0), gp_Pnt(200, 200, 0),

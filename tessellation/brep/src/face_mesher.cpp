@@ -290,7 +290,9 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
       }
       while (next < cdt_->vertexCount()) {  // defensive: any vertex not matched above
         const cet::Point2 q = cdt_->point(next);
-        appendVertex(mesh, eval_.u0 + q.x / eval_.su, eval_.v0 + q.y / eval_.sv, nullptr);
+        double u = 0, v = 0;
+        eval_.unscaled(q, u, v);
+        appendVertex(mesh, u, v, nullptr);
         ++next;
       }
       if (!s.ok()) {
@@ -340,7 +342,9 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   double worst = -1, worstCorresponding = -1;
   std::uint8_t worstCorrespondingSample = 0;
   auto sample = [&](double b0, double b1, double b2, std::uint8_t id) {
-    double u = b0 * U[0] + b1 * U[1] + b2 * U[2], w = b0 * V[0] + b1 * V[1] + b2 * V[2];
+    const double b[3] = {b0, b1, b2};
+    double u = 0, w = 0;
+    eval_.blend(3, b, U, V, u, w);
     const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
     double corresponding = 0;
     const double d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding);
@@ -447,8 +451,11 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
       // Sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
       double w = 0, h = 0;
       for (double f : {0.25, 0.5, 0.75}) {
-        const gp_Pnt under = eval_.point((1 - f) * mesh.uv[2 * oa] + f * mesh.uv[2 * ob],
-                                         (1 - f) * mesh.uv[2 * oa + 1] + f * mesh.uv[2 * ob + 1]);
+        const double weights[2] = {1 - f, f}, cu[2] = {mesh.uv[2 * oa], mesh.uv[2 * ob]};
+        const double cv[2] = {mesh.uv[2 * oa + 1], mesh.uv[2 * ob + 1]};
+        double u = 0, v = 0;
+        eval_.blend(2, weights, cu, cv, u, v);
+        const gp_Pnt under = eval_.point(u, v);
         const gp_Vec bulge(c.a.XYZ() + f * c.ab.XYZ(), under.XYZ());
         w = std::min(w, bulge.Dot(inward));
         h = std::max(h, std::abs(bulge.Dot(c.n)));
@@ -515,10 +522,18 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
       cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
     }
     double tu[4] = {(cu[0] + cu[1] + cu[2]) / 3, 0, 0, 0}, tv[4] = {(cv[0] + cv[1] + cv[2]) / 3, 0, 0, 0};
+    if (!eval_.linear()) {
+      const double third[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+      eval_.blend(3, third, cu, cv, tu[0], tv[0]);
+    }
     int n = 1;
     for (int i = 0; i < 3; ++i) {
       if (m.isConstrained(t, i)) continue;
       tu[n] = 0.5 * (cu[(i + 1) % 3] + cu[(i + 2) % 3]), tv[n] = 0.5 * (cv[(i + 1) % 3] + cv[(i + 2) % 3]);
+      if (!eval_.linear()) {
+        const double half[2] = {0.5, 0.5}, eu[2] = {cu[(i + 1) % 3], cu[(i + 2) % 3]}, ev[2] = {cv[(i + 1) % 3], cv[(i + 2) % 3]};
+        eval_.blend(2, half, eu, ev, tu[n], tv[n]);
+      }
       ++n;
     }
     for (int i = 0; i < n; ++i) {
@@ -535,7 +550,12 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     const std::size_t oc = base_ + m.vertex(t, own);
     const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
     for (double f : {0.5, 0.7}) {
-      const double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
+      double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
+      if (!eval_.linear()) {
+        const double w[3] = {0.5 * (1 - f), 0.5 * (1 - f), f}, cu[3] = {mesh.uv[2 * oa], mesh.uv[2 * ob], mesh.uv[2 * oc]};
+        const double cv[3] = {mesh.uv[2 * oa + 1], mesh.uv[2 * ob + 1], mesh.uv[2 * oc + 1]};
+        eval_.blend(3, w, cu, cv, uu, vv);
+      }
       if (clearOfChords(uu, vv)) {
         u = uu, v = vv;
         return true;
@@ -593,11 +613,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
-      double u = 0, v = 0;
+      double cu[3], cv[3];
       for (int i = 0; i < 3; ++i) {
         const std::size_t o = base_ + m.vertex(t, i);
-        u += b[i] * mesh.uv[2 * o], v += b[i] * mesh.uv[2 * o + 1];
+        cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
       }
+      double u = 0, v = 0;
+      eval_.blend(3, b, cu, cv, u, v);
       // The chordal promise outranks the clearance (which only guards against folds): a triangle
       // too far from the surface is split at its worst sample regardless.
       const bool tooFar = r->deviation > chordal;
@@ -636,7 +658,9 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         appendVertex(mesh, uvs[i].X(), uvs[i].Y(), nullptr);
       } else {
         const cet::Point2 q = cdt_->point(id);
-        appendVertex(mesh, eval_.u0 + q.x / eval_.su, eval_.v0 + q.y / eval_.sv, nullptr);
+        double u = 0, v = 0;
+        eval_.unscaled(q, u, v);
+        appendVertex(mesh, u, v, nullptr);
       }
     }
   }

@@ -69,7 +69,7 @@ class FaceMesher {
   // Appends the output data of the next triangulator vertex: at (u, v), position p (an edge point)
   // or, when p is null, the surface point.
   void appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p);
-  cet::Point2 scaled(double u, double v) const { return {(u - eval_.u0) * eval_.su, (v - eval_.v0) * eval_.sv}; }
+  cet::Point2 scaled(double u, double v) const { return eval_.scaled(u, v); }
   void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const;
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge

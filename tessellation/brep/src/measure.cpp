@@ -29,7 +29,16 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
         m += b[i] * gp_XYZ(positions[3 * v[i]], positions[3 * v[i] + 1], positions[3 * v[i] + 2]);
         u += b[i] * uv[2 * v[i]], w += b[i] * uv[2 * v[i] + 1];
       }
-      worst = std::max(worst, eval.project(gp_Pnt(m), u, w, 8));
+      double d = eval.project(gp_Pnt(m), u, w, 8);
+      if (!eval.linear()) {
+        // Spans with scales of their own (surface_eval.h): the triangle is straight in the scaled
+        // plane, where its point's parameters are a much better start than the UV interpolation.
+        const double b3[3] = {b[0], b[1], b[2]}, cu[3] = {uv[2 * v[0]], uv[2 * v[1]], uv[2 * v[2]]};
+        const double cv[3] = {uv[2 * v[0] + 1], uv[2 * v[1] + 1], uv[2 * v[2] + 1]};
+        eval.blend(3, b3, cu, cv, u, w);
+        d = std::min(d, eval.project(gp_Pnt(m), u, w, 8));
+      }
+      worst = std::max(worst, d);
     }
   }
   return worst;

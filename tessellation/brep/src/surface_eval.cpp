@@ -6,6 +6,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomLib.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 
@@ -66,6 +67,15 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   }
   if (!(su > 0) || !std::isfinite(su)) su = 1;
   if (!(sv > 0) || !std::isfinite(sv)) sv = 1;
+  uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {su};
+  vAxis_.t = {v0}, vAxis_.x = {0.0}, vAxis_.slope = {sv};
+  try {
+    buildAxis(true, uAxis_);
+    buildAxis(false, vAxis_);
+  } catch (const Standard_Failure&) {
+    uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {su}, uAxis_.period = 0;
+    vAxis_.t = {v0}, vAxis_.x = {0.0}, vAxis_.slope = {sv}, vAxis_.period = 0;
+  }
 
   // Creases: the ends of the surface's C1 intervals inside its parameter range; a periodic
   // direction's seam as well where the surface has any crease in that direction (its seam knot is
@@ -94,6 +104,72 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   if (vPeriodic_ && !vCreases_.empty()) vPeriod_ = surface_.VPeriod();
 }
 
+void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
+  if (surface_.GetType() != GeomAbs_BSplineSurface) return;
+  const Handle(Geom_BSplineSurface) bs = surface_.BSpline();
+  const int n = uDir ? bs->NbUKnots() : bs->NbVKnots();
+  if (n < 3 || n > 2049) return;  // one span, or more than are worth sampling
+  std::vector<double> knots(static_cast<std::size_t>(n));
+  for (int i = 1; i <= n; ++i) knots[std::size_t(i - 1)] = uDir ? bs->UKnot(i) : bs->VKnot(i);
+  // Mean 3D speed of each span, sampled across the face's extent in the other direction; the spans
+  // the face covers decide whether one scale will do.
+  const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
+  const double from = uDir ? uMin : vMin, to = uDir ? uMax : vMax;
+  std::vector<double> slope(knots.size() - 1);
+  double smin = 1e300, smax = 0;
+  for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    double sum = 0;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 5; ++j) {
+        const double t = knots[k] + (knots[k + 1] - knots[k]) * (i + 0.5) / 3, w = lo + (hi - lo) * (j + 0.5) / 5;
+        gp_Pnt p;
+        gp_Vec du, dv;
+        if (uDir) {
+          surface_.D1(t, w, p, du, dv);
+        } else {
+          surface_.D1(w, t, p, du, dv);
+        }
+        sum += (uDir ? du : dv).Magnitude();
+      }
+    }
+    slope[k] = sum / 15;
+    if (knots[k + 1] > from && knots[k] < to) smin = std::min(smin, slope[k]), smax = std::max(smax, slope[k]);
+  }
+  if (!(smax > 4 * smin) || !std::isfinite(smax)) return;
+  // A span without extent (its poles on one point) still needs some room in x.
+  const double mean = uDir ? su : sv;
+  for (double& s : slope) s = std::isfinite(s) ? std::max(s, 1e-3 * mean) : mean;
+  axis.t = knots;
+  axis.slope = slope;
+  axis.x.assign(1, 0.0);
+  for (std::size_t k = 0; k < slope.size(); ++k) axis.x.push_back(axis.x.back() + (knots[k + 1] - knots[k]) * slope[k]);
+  const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
+  axis.period = periodic ? knots.back() - knots.front() : 0.0;
+  axis.periodX = axis.x.back();
+}
+
+double SurfaceEval::Axis::map(double value) const {
+  if (slope.size() == 1) return (value - t[0]) * slope[0];
+  double shift = 0;
+  if (period > 0) {
+    const double turns = std::floor((value - t.front()) / period);
+    value -= turns * period, shift = turns * periodX;
+  }
+  const auto k = static_cast<std::size_t>(std::upper_bound(t.begin() + 1, t.end() - 1, value) - t.begin() - 1);
+  return shift + x[k] + (value - t[k]) * slope[k];
+}
+
+double SurfaceEval::Axis::inverse(double value) const {
+  if (slope.size() == 1) return t[0] + (value - x[0]) / slope[0];
+  double shift = 0;
+  if (period > 0) {
+    const double turns = std::floor((value - x.front()) / periodX);
+    value -= turns * periodX, shift = turns * period;
+  }
+  const auto k = static_cast<std::size_t>(std::upper_bound(x.begin() + 1, x.end() - 1, value) - x.begin() - 1);
+  return shift + t[k] + (value - x[k]) / slope[k];
+}
+
 bool SurfaceEval::crosses(const std::vector<double>& creases, double period, double a, double b) {
   if (creases.empty() || a == b) return false;
   if (a > b) std::swap(a, b);
@@ -111,7 +187,6 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
   }
   return false;
 }
-
 
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;

@@ -12,6 +12,8 @@
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
+#include "cet/types.h"
+
 namespace cetview::brep {
 
 class SurfaceEval {
@@ -37,8 +39,29 @@ class SurfaceEval {
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
-  // shapes about as in 3D.
-  double u0 = 0, v0 = 0, su = 1, sv = 1;
+  // shapes about as in 3D. On a B-spline surface whose knot spans run at very different 3D speeds
+  // (a span 1e-4 as long as its neighbours carrying as much of the surface, say) one scale cannot
+  // serve them all: each span then gets its own (x is piecewise linear in u, continuous, monotone).
+  cet::Point2 scaled(double u, double v) const { return {uAxis_.map(u), vAxis_.map(v)}; }
+  void unscaled(const cet::Point2& q, double& u, double& v) const { u = uAxis_.inverse(q.x), v = vAxis_.inverse(q.y); }
+  double u0 = 0, v0 = 0, su = 1, sv = 1;  // the one scale (the mean over the face) in each direction
+  // One scale per direction: straight lines in UV are straight in the scaled plane.
+  bool linear() const { return uAxis_.slope.size() == 1 && vAxis_.slope.size() == 1; }
+  // The UV of the point with weights w[0..n) of the corners (u[i], v[i]) in the scaled plane, where
+  // the triangulation's edges are straight (in UV too when linear()).
+  void blend(int n, const double* w, const double* u, const double* v, double& ou, double& ov) const {
+    ou = 0, ov = 0;
+    if (linear()) {
+      for (int i = 0; i < n; ++i) ou += w[i] * u[i], ov += w[i] * v[i];
+      return;
+    }
+    cet::Point2 q;
+    for (int i = 0; i < n; ++i) {
+      const cet::Point2 p = scaled(u[i], v[i]);
+      q.x += w[i] * p.x, q.y += w[i] * p.y;
+    }
+    unscaled(q, ou, ov);
+  }
 
   // True when a crease (a parameter line where the surface is not C1: a B-spline knot of full
   // multiplicity, the seam of a periodic surface that is C0 there, a C0 swept curve) lies between
@@ -54,6 +77,18 @@ class SurfaceEval {
                      double settle = 1e-3) const;
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
+
+  // One direction's scaling: x = x[k] + (t - t[k]) * slope[k] in span k (extended linearly past the
+  // ends, repeated with the period when periodic). One span: x = (t - t[0]) * slope[0].
+  struct Axis {
+    std::vector<double> t, x, slope;
+    double period = 0, periodX = 0;
+    double map(double value) const;
+    double inverse(double value) const;
+  };
+  // Per-span scales of a B-spline direction where its spans' 3D speeds differ by more than 4x.
+  void buildAxis(bool uDir, Axis& axis) const;
+  Axis uAxis_, vAxis_;
 
   BRepAdaptor_Surface surface_;
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
