@@ -7,10 +7,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include <BRepTools.hxx>
-
 #include "brep/measure.h"
 #include "brep/mesh_check.h"
+#include "shape_file.h"
 
 namespace cetview::brep::test {
 
@@ -20,11 +19,8 @@ std::string tempPath(const std::string& name) {
 }
 
 std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name) {
-  const std::string path = tempPath(name + ".brep");
-  EXPECT_TRUE(BRepTools::Write(shape, path.c_str()));
-  LoadResult r = loadModel(path);
+  LoadResult r = cetview::test::loadShapeThroughFile(shape, tempPath(name + ".brep"));
   EXPECT_TRUE(r) << r.error;
-  ::unlink(path.c_str());
   return std::move(r.model);
 }
 
