@@ -42,6 +42,11 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
   return 0.5 * a;
 }
 
+// The triangulator's predicates are exact only for coordinates in its range (cet/types.h): zero or
+// magnitudes in [1e-50, 1e50]. Outside it an orientation test can contradict another, and a point
+// location walk can cycle for ever.
+bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && cet::supportedCoordinate(p.y); }
+
 }  // namespace
 
 FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings)
@@ -213,6 +218,12 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
                                     [&](const Occurrence& o) { return loops[o.loop].empty(); }),
                      occurrences_.end());
 
+  for (const cet::Point2& p : points_) {
+    if (!supported(p)) {
+      problem = "boundary parameters outside the triangulator's range";
+      return false;
+    }
+  }
   cdt_->reserve(points_.size() * 4);
   cdt_->addVertices(points_.data(), points_.size());
   if (!cdt_->insertPending()) {
@@ -270,6 +281,10 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
         ps.push_back(&now.p[j]);
       }
       if (pts.empty()) continue;
+      if (!std::all_of(pts.begin(), pts.end(), supported)) {
+        problem = "refined boundary parameters outside the triangulator's range";
+        return false;
+      }
       if (!occ.forward) {
         std::reverse(pts.begin(), pts.end());
         std::reverse(uvs.begin(), uvs.end());
@@ -638,9 +653,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, angle %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalAngle, r->longest, r->flags, u, v);
       }
+      // A point the predicates cannot handle is no split: refinement towards a corner (a pole, a
+      // sliver) must not end in underflowing coordinates.
+      const cet::Point2 q = scaled(u, v);
+      if (!supported(q)) continue;
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
-      points_.push_back(scaled(u, v));
+      points_.push_back(q);
     }
     if (points_.empty()) return true;
     const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
