@@ -1,5 +1,6 @@
 // Seeded driver for any libFuzzer target in this folder (linked with one target's source): replays the
-// files and directories named on the command line, then feeds --iterations (or --seconds of) inputs,
+// files and directories named on the command line, then feeds --iterations (default 2000, or none
+// when files are given) or --seconds of inputs,
 // input i drawn from its own generator seeded by (--seed, i) so one input replays alone with
 // --first i --iterations 1. Inputs come from the target's generateInput hook, else random bytes.
 // On an abort or crash it names the input and writes it to ./crash-<seed>-<i> (libFuzzer and this
@@ -99,7 +100,7 @@ int main(int argc, char** argv) {
   std::string name = argv[0];
   name = name.substr(name.find_last_of('/') + 1);
   std::uint64_t seed = 1;
-  long iterations = 2000, first = 0;
+  long iterations = -1, first = 0;  // default: 2000, or none when files are replayed
   double seconds = 0;
   std::size_t maxLen = 512;
   bool verbose = false;
@@ -128,6 +129,7 @@ int main(int argc, char** argv) {
       paths.push_back(argv[i]);
     }
   }
+  if (iterations < 0) iterations = paths.empty() || seconds > 0 ? 2000 : 0;
   installCrashHandler();
 
   const auto start = std::chrono::steady_clock::now();
