@@ -3,7 +3,8 @@
 // random trimming loops in their UV domain (polygons, ellipses, wiggly periodic B-splines; reversed,
 // self-intersecting, touching, partly outside the domain, tiny), or natural-bounds faces, a few of
 // them sewn into a shell or put in a compound. The shape goes through cetview's public API as a user's
-// .brep file would (loadModel, Tessellator) with random MeshParams.
+// .brep file would (loadModel, Tessellator) with random MeshParams, level by level within a work
+// budget (no level after one above 60k triangles; cancelled after 6 s, FACE_FUZZ_BUDGET_SECONDS).
 // Built two ways like poly_fuzz: a libFuzzer target (clang, -DCETVIEW_LIBFUZZER=ON) and the seeded
 // driver (fuzz_driver.cpp). A broken contract aborts with one line on stderr; quality promises
 // (deviation within the level's tolerance, no degenerate or flipped triangle) are counted and printed
@@ -11,13 +12,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -42,6 +48,7 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax22d.hxx>
@@ -65,7 +72,8 @@ using namespace cetview::brep;
 
 bool oneLine(const std::string& s) { return s.find('\n') == std::string::npos && s.find('\r') == std::string::npos; }
 
-// The bytes as a stream of choices; past the end every read is zero (a valid, dull choice).
+// The bytes as a stream of choices; past the end every read is zero (every pick() its first option,
+// every chance() taken, every range() its low end): short inputs are valid too.
 class Bytes {
  public:
   Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
@@ -87,6 +95,10 @@ class Bytes {
 
 // ---------------------------------------------------------------------------------------------
 // Shape generation (OpenCASCADE may throw anywhere in here: the input is then uninteresting).
+
+// Why OCCT refused the last input's shape (for the summary: how much of the input space is wasted).
+enum Refusal { kNoRefusal, kRefusedEdge, kRefusedWire, kRefusedFace, kRefusedThrow, kRefusalCount };
+Refusal refusal = kNoRefusal;
 
 // Knots and multiplicities of one direction. Clamped: end multiplicities degree+1 and interior ones
 // mostly 1, sometimes up to the degree (C0 creases); periodic: all 1. Knot spacing is uneven,
@@ -251,20 +263,40 @@ std::vector<Piece> makeLoop(Bytes& in, const Domain& d, double cs, double ct, do
 }
 
 // Edges on the surface from the pieces, sharing their vertices; null wire when OCCT refuses.
-TopoDS_Wire makeWire(const std::vector<Piece>& loop, const Handle(Geom_Surface)& s) {
+// Consecutive corners on one 3D point (a pole row, a tiny surface) share their vertex, as OCCT
+// requires; such an edge is sometimes flagged degenerated, as CAD systems write poles.
+TopoDS_Wire makeWire(Bytes& in, const std::vector<Piece>& loop, const Handle(Geom_Surface)& s) {
   if (loop.empty()) return {};
   std::vector<TopoDS_Vertex> vertices;
+  std::vector<gp_Pnt> points;
   for (const Piece& p : loop) {
     const gp_Pnt2d uv = p.curve->Value(p.first);
-    vertices.push_back(BRepBuilderAPI_MakeVertex(s->Value(uv.X(), uv.Y())).Vertex());
+    points.push_back(s->Value(uv.X(), uv.Y()));
+    if (!vertices.empty() && points.back().Distance(points[points.size() - 2]) <= Precision::Confusion()) {
+      vertices.push_back(vertices.back());
+    } else {
+      vertices.push_back(BRepBuilderAPI_MakeVertex(points.back()).Vertex());
+    }
   }
+  for (std::size_t k = vertices.size() - 1; k > 0 && points[k].Distance(points[0]) <= Precision::Confusion(); --k)
+    vertices[k] = vertices[0];
   BRepBuilderAPI_MakeWire wire;
   for (std::size_t k = 0; k < loop.size(); ++k) {
     const Piece& p = loop[k];
-    BRepBuilderAPI_MakeEdge edge(p.curve, s, vertices[k], vertices[(k + 1) % loop.size()], p.first, p.last);
-    if (!edge.IsDone()) return {};
-    wire.Add(edge.Edge());
-    if (!wire.IsDone()) return {};
+    const TopoDS_Vertex& v1 = vertices[k];
+    const TopoDS_Vertex& v2 = vertices[(k + 1) % loop.size()];
+    BRepBuilderAPI_MakeEdge edge(p.curve, s, v1, v2, p.first, p.last);
+    if (!edge.IsDone()) {
+      refusal = kRefusedEdge;
+      return {};
+    }
+    TopoDS_Edge e = edge.Edge();
+    if (loop.size() > 1 && v1.IsSame(v2) && in.chance(50)) BRep_Builder().Degenerated(e, Standard_True);
+    wire.Add(e);
+    if (!wire.IsDone()) {
+      refusal = kRefusedWire;
+      return {};
+    }
   }
   return wire.Wire();
 }
@@ -291,20 +323,26 @@ TopoDS_Face makeFace(Bytes& in, const Handle(Geom_BSplineSurface)& s, bool natur
     const double r = spill ? in.range(0.3, 0.9) : in.range(0.2, 0.45);
     outer = makeLoop(in, d, cs, ct, r, in.chance(10), corners, nullptr);
   }
-  const TopoDS_Wire outerWire = makeWire(outer, s);
+  const TopoDS_Wire outerWire = makeWire(in, outer, s);
   if (outerWire.IsNull()) return {};
   BRepBuilderAPI_MakeFace face(s, outerWire, in.chance(70));
-  if (!face.IsDone()) return {};
+  if (!face.IsDone()) {
+    refusal = kRefusedFace;
+    return {};
+  }
   const int holes = in.pick(5);
   for (int h = 0; h < holes; ++h) {
     const double r = in.chance(15) ? in.logRange(1e-7, 1e-3) : in.range(0.02, 0.25);
     const double cs = in.range(0.1, 0.9), ct = in.range(0.1, 0.9);
     const gp_Pnt2d* touch = !corners.empty() && in.chance(20) ? &corners[std::size_t(in.pick(int(corners.size())))] : nullptr;
     std::vector<gp_Pnt2d> innerCorners;
-    const TopoDS_Wire w = makeWire(makeLoop(in, d, cs, ct, r, !in.chance(15), innerCorners, touch), s);
+    const TopoDS_Wire w = makeWire(in, makeLoop(in, d, cs, ct, r, !in.chance(15), innerCorners, touch), s);
     if (w.IsNull()) continue;
     face.Add(w);
-    if (!face.IsDone()) return {};
+    if (!face.IsDone()) {
+      refusal = kRefusedFace;
+      return {};
+    }
     corners.insert(corners.end(), innerCorners.begin(), innerCorners.end());
   }
   TopoDS_Face f = face.Face();
@@ -325,7 +363,10 @@ TopoDS_Shape makeShape(Bytes& in) {
     for (int k = 0; k < n; ++k) {
       const double a = u1 + (u2 - u1) * k / n, b = u1 + (u2 - u1) * (k + 1) / n;
       BRepBuilderAPI_MakeFace f(s, a, b, v1, v2, Precision::Confusion());
-      if (!f.IsDone()) return {};
+      if (!f.IsDone()) {
+        refusal = kRefusedFace;
+        return {};
+      }
       sewing.Add(f.Face());
     }
     sewing.Perform();
@@ -349,41 +390,95 @@ TopoDS_Shape makeShape(Bytes& in) {
 }
 
 // ---------------------------------------------------------------------------------------------
+constexpr std::size_t kTriangleBudget = 60000;
+
+// Seconds a tessellation may take before the target cancels it (FACE_FUZZ_BUDGET_SECONDS).
+double budgetSeconds() {
+  static const double seconds = [] {
+    const char* text = std::getenv("FACE_FUZZ_BUDGET_SECONDS");
+    const double s = text ? std::atof(text) : 0.0;
+    return s > 0 ? s : 6.0;
+  }();
+  return seconds;
+}
+
+// Raises `flag` after `seconds` unless stopped first.
+class Watchdog {
+ public:
+  Watchdog(double seconds, std::atomic<bool>& flag)
+      : thread_([this, seconds, &flag] {
+          std::unique_lock<std::mutex> lock(mutex_);
+          if (!wake_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return stopped_; })) {
+            flag = true;
+            raisedAt_ = std::chrono::steady_clock::now();
+            raised_ = true;
+          }
+        }) {}
+  ~Watchdog() { stop(); }
+  // Stops it; returns the seconds since the flag was raised (0 when it was not).
+  double stop() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stopped_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+    return raised_ ? std::chrono::duration<double>(std::chrono::steady_clock::now() - raisedAt_).count() : 0.0;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopped_ = false, raised_ = false;
+  std::chrono::steady_clock::time_point raisedAt_;
+  std::thread thread_;  // last: starts once the members above exist
+};
+
 // What the run counted (single-threaded: the target runs one input at a time).
 struct Counts {
   long inputs = 0, shapes = 0, refused = 0, loadErrors = 0, createErrors = 0;
+  long refusedBy[kRefusalCount] = {};  // kNoRefusal: a degenerate loop the generator itself dropped
   long faces = 0, ok = 0, repaired = 0, fallback = 0, empty = 0;
   long measuredLevels = 0;         // (face, level) pairs measured on kOk faces
   long okLevelsOver = 0;           // kOk (face, level) deviating beyond the level's chordal tolerance
-  long okFacesOverFinal = 0;       // kOk faces deviating beyond the final tolerance
+  long okFacesOverFinal = 0;       // kOk faces deviating beyond the tolerance of the last level run
   long okNotMeasurable = 0;        // kOk faces whose deviation came out infinite or NaN
   double worstRatio = 0;           // largest deviation / tolerance on a kOk face
   long cetFacesDegenerate = 0, cetDegenerate = 0, cetFacesFlipped = 0, cetFlipped = 0;  // kOk, kRepaired
   long fallbackFacesDegenerate = 0, fallbackFacesFlipped = 0;
   long triangles = 0;
+  long budgetStops = 0;            // runs stopped before the last level (kTriangleBudget)
+  long budgetCancels = 0;          // runs cancelled by the time budget (their promise not measured)
 };
 Counts counts;
+std::string firstLoadError;  // a shape OCCT built and wrote that cetview would not load: worth a look
 
-void checkFace(const Tessellator& t, FaceId f) {
+// `last`: the level run() was asked for; `cancelled`: the time budget cancelled it (faces may then
+// be pending, cancelled, or at any level up to `last`, with a partial level's vertices appended).
+void checkFace(const Tessellator& t, FaceId f, int last, bool cancelled) {
   const FaceReport report = t.report(f);
   const FaceMesh& m = t.faceMesh(f);
   const std::string where = "face " + std::to_string(f) + " (" + faceStatusName(report.status) + ")";
   switch (report.status) {
     case FaceStatus::kPending:
-    case FaceStatus::kCancelled: fail("face left pending or cancelled after run()", where);
+    case FaceStatus::kCancelled:
+      if (!cancelled) fail("face left pending or cancelled after run()", where);
+      break;
     case FaceStatus::kOk: ++counts.ok; break;
     case FaceStatus::kRepaired: ++counts.repaired; break;
     case FaceStatus::kFallback: ++counts.fallback; break;
     case FaceStatus::kEmpty: ++counts.empty; break;
   }
   if (!oneLine(report.reason)) fail("report reason is not one line", where);
-  if (report.status != FaceStatus::kOk && report.status != FaceStatus::kEmpty && report.reason.empty())
+  if ((report.status == FaceStatus::kRepaired || report.status == FaceStatus::kFallback) && report.reason.empty())
     fail("repaired or fallback face without a reason", where);
-  if (t.faceLevel(f) != t.lastLevel()) fail("face did not reach the last level", where);
-  if (m.levels.size() != t.schedule().size() || m.levelVertexEnd.size() != m.levels.size())
-    fail("level arrays out of step with the schedule", where);
-  const bool meshed = report.status != FaceStatus::kEmpty;
-  if (meshed && m.levels.back().empty()) fail("meshed face with an empty final level", where);
+  const int reached = t.faceLevel(f);
+  if (reached > last || (!cancelled && reached != last)) fail("face not at the level run() was asked for", where);
+  if (m.levels.size() != std::size_t(reached + 1) || m.levelVertexEnd.size() != m.levels.size())
+    fail("level arrays out of step with the face's level", where);
+  const bool meshed = report.status == FaceStatus::kOk || report.status == FaceStatus::kRepaired ||
+                      report.status == FaceStatus::kFallback;
+  if (meshed && (m.levels.empty() || m.levels.back().empty())) fail("meshed face with an empty final level", where);
   const std::size_t n = m.vertexCount();
   if (m.positions.size() != 3 * n || m.normals.size() != 3 * n || m.uv.size() != 2 * n)
     fail("vertex arrays of different lengths", where);
@@ -398,7 +493,7 @@ void checkFace(const Tessellator& t, FaceId f) {
       if (i >= end) fail("level uses a vertex appended after it completed", where);
     }
   }
-  if (end != n) fail("vertices appended after the last level completed", where);
+  if (end != n && !cancelled) fail("vertices appended after the last level completed", where);
   for (std::size_t i = 0; i < n; ++i) {
     const double* p = &m.positions[3 * i];
     const float* q = &m.normals[3 * i];
@@ -408,12 +503,12 @@ void checkFace(const Tessellator& t, FaceId f) {
     const double len = std::sqrt(double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);
     if (std::abs(len - 1.0) > 1e-3) fail("normal not unit length", where + ": |n| = " + std::to_string(len));
   }
-  counts.triangles += static_cast<long>(m.levels.back().size() / 3);
+  if (!m.levels.empty()) counts.triangles += static_cast<long>(m.levels.back().size() / 3);
 }
 
 // The promise (DESIGN.md "Tolerance semantics"), measured as the tests do: counted, not aborted on.
-void measurePromise(const Tessellator& t) {
-  for (int k = 0; k <= t.lastLevel(); ++k) {
+void measurePromise(const Tessellator& t, int last) {
+  for (int k = 0; k <= last; ++k) {
     const double tolerance = t.schedule()[std::size_t(k)].chordal;
     const std::vector<FaceQuality> quality = measureFaces(t, k, 1);
     for (FaceId f = 0; f < quality.size(); ++f) {
@@ -423,16 +518,16 @@ void measurePromise(const Tessellator& t) {
       if (status == FaceStatus::kOk) {
         ++counts.measuredLevels;
         if (!std::isfinite(q.maxDeviation)) {
-          if (k == t.lastLevel()) ++counts.okNotMeasurable;
+          if (k == last) ++counts.okNotMeasurable;
         } else {
           counts.worstRatio = std::max(counts.worstRatio, q.maxDeviation / tolerance);
           if (q.maxDeviation > tolerance) {
             ++counts.okLevelsOver;
-            if (k == t.lastLevel()) ++counts.okFacesOverFinal;
+            if (k == last) ++counts.okFacesOverFinal;
           }
         }
       }
-      if (k != t.lastLevel()) continue;
+      if (k != last) continue;
       if (cet) {
         counts.cetFacesDegenerate += q.degenerate > 0;
         counts.cetDegenerate += static_cast<long>(q.degenerate);
@@ -455,7 +550,7 @@ void tessellate(const TopoDS_Shape& shape, const MeshParams& params) {
   LoadResult loaded = cetview::test::loadShapeThroughFile(shape, tempPath());
   if (!loaded) {
     if (loaded.error.empty() || !oneLine(loaded.error)) fail("load error not one line", loaded.error);
-    ++counts.loadErrors;
+    if (counts.loadErrors++ == 0) firstLoadError = loaded.error;
     return;
   }
   const Model& model = *loaded.model;
@@ -466,12 +561,35 @@ void tessellate(const TopoDS_Shape& shape, const MeshParams& params) {
     return;
   }
   Tessellator& t = *created.tessellator;
-  if (!t.run(1)) fail("run() returned false without cancellation");
+  // Work budget: levels run one at a time, and none after a level above kTriangleBudget triangles;
+  // the whole run gets budgetSeconds() before it is cancelled through the public flag. Fine levels
+  // of big wavy faces legitimately take millions of triangles (tens of seconds under ASan), and
+  // this target looks for broken contracts, crashes and hangs, not for big meshes. A cancelled run
+  // must return promptly (cancellation is part of the API); work that ignores the flag still times
+  // out, and the summary counts the cancelled runs.
+  std::atomic<bool> cancel{false};
+  Watchdog watchdog(budgetSeconds(), cancel);
+  int last = 0;
+  bool cancelled = false;
+  for (int k = 0; k <= t.lastLevel() && !cancelled; ++k) {
+    last = k;
+    if (!t.run(1, {}, &cancel, k)) {
+      if (!cancel.load()) fail("run() returned false without cancellation");
+      cancelled = true;
+    } else if (t.triangleCount(k) > kTriangleBudget) {
+      ++counts.budgetStops;
+      break;
+    }
+  }
+  const double late = watchdog.stop();
+  if (late > budgetSeconds())
+    fail("cancellation not honoured", "run() returned " + std::to_string(late) + " s after the flag was raised");
+  counts.budgetCancels += cancelled;
   for (FaceId f = 0; f < model.faces().size(); ++f) {
     ++counts.faces;
-    checkFace(t, f);
+    checkFace(t, f, last, cancelled);
   }
-  measurePromise(t);
+  if (!cancelled) measurePromise(t, last);
   if (std::getenv("FACE_FUZZ_DUMP")) {
     for (FaceId f = 0; f < model.faces().size(); ++f) {
       const FaceMesh& m = t.faceMesh(f);
@@ -486,16 +604,20 @@ void tessellate(const TopoDS_Shape& shape, const MeshParams& params) {
 void printCounts(std::FILE* out) {
   const Counts& c = counts;
   std::fprintf(out,
-               "face_fuzz: %ld inputs: %ld shapes tessellated, %ld refused by OCCT, %ld load errors, %ld create errors\n"
-               "face_fuzz: %ld faces: %ld ok, %ld repaired, %ld fallback, %ld empty; %ld final triangles\n"
-               "face_fuzz: promise on ok faces: %ld of %ld faces over the final tolerance, %ld of %ld (face, level) over "
-               "the level's, worst %.3gx, %ld not measurable\n"
+               "face_fuzz: %ld inputs: %ld shapes tessellated, %ld refused by OCCT (edge %ld, wire %ld, face %ld, exception "
+               "%ld, degenerate loop %ld), %ld load errors, %ld create errors\n"
+               "face_fuzz: %ld faces: %ld ok, %ld repaired, %ld fallback, %ld empty; %ld final triangles; %ld runs "
+               "stopped early by the triangle budget, %ld cancelled by the time budget\n"
+               "face_fuzz: promise on ok faces: %ld of %ld faces over the tolerance of their last level, %ld of %ld "
+               "(face, level) over the level's, worst %.3gx, %ld not measurable\n"
                "face_fuzz: ok/repaired faces with degenerate triangles %ld (%ld triangles), with flipped %ld (%ld "
                "triangles); fallback faces with degenerate %ld, flipped %ld\n",
-               c.inputs, c.shapes, c.refused, c.loadErrors, c.createErrors, c.faces, c.ok, c.repaired, c.fallback,
-               c.empty, c.triangles, c.okFacesOverFinal, c.ok, c.okLevelsOver, c.measuredLevels, c.worstRatio,
+               c.inputs, c.shapes, c.refused, c.refusedBy[kRefusedEdge], c.refusedBy[kRefusedWire],
+               c.refusedBy[kRefusedFace], c.refusedBy[kRefusedThrow], c.refusedBy[kNoRefusal], c.loadErrors, c.createErrors, c.faces, c.ok, c.repaired, c.fallback,
+               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.okFacesOverFinal, c.ok, c.okLevelsOver, c.measuredLevels, c.worstRatio,
                c.okNotMeasurable, c.cetFacesDegenerate, c.cetDegenerate, c.cetFacesFlipped, c.cetFlipped,
                c.fallbackFacesDegenerate, c.fallbackFacesFlipped);
+  if (!firstLoadError.empty()) std::fprintf(out, "face_fuzz: first load error: %s\n", firstLoadError.c_str());
 }
 
 }  // namespace
@@ -516,15 +638,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   MeshParams params;
   params.chordal = {in.logRange(1e-4, 0.1), true};
   params.angleDeg = in.range(5.0, 60.0);
+  // Without levels the work budget cannot stop early: only down to 0.1% then.
   params.progressive = !in.chance(15);
+  if (!params.progressive) params.chordal.value = std::max(params.chordal.value, 1e-3);
   TopoDS_Shape shape;
+  refusal = kNoRefusal;
   try {
     shape = makeShape(in);
   } catch (const Standard_Failure&) {
     shape.Nullify();
+    refusal = kRefusedThrow;
   }
   if (shape.IsNull()) {
     ++counts.refused;
+    ++counts.refusedBy[refusal];
     return 0;
   }
   ++counts.shapes;
