@@ -8,12 +8,6 @@
 namespace cetview::brep {
 namespace {
 
-std::unique_ptr<Model> demo() {
-  LoadResult r = loadModel("demo");
-  EXPECT_TRUE(r) << r.error;
-  return std::move(r.model);
-}
-
 void expectSameFace(const Tessellator& a, const Tessellator& b, FaceId f) {
   const FaceMesh& x = a.faceMesh(f);
   const FaceMesh& y = b.faceMesh(f);
@@ -33,7 +27,7 @@ void expectWellFormed(const Tessellator& t, FaceId f) {
 }
 
 TEST(Isolation, ThrowingFaceFallsBackAndTheRestIsUntouched) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto clean = Tessellator::create(*m, test::relative(0.001)).tessellator;
   auto faulty = Tessellator::create(*m, test::relative(0.001)).tessellator;
   ASSERT_TRUE(clean && faulty);
@@ -54,7 +48,7 @@ TEST(Isolation, ThrowingFaceFallsBackAndTheRestIsUntouched) {
 }
 
 TEST(Isolation, FailureAfterSomeLevelsKeepsTheCompletedOnes) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto clean = Tessellator::create(*m, test::relative(0.001)).tessellator;
   auto faulty = Tessellator::create(*m, test::relative(0.001)).tessellator;
   ASSERT_TRUE(clean && faulty);

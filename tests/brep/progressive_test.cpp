@@ -10,14 +10,8 @@
 namespace cetview::brep {
 namespace {
 
-std::unique_ptr<Model> demo() {
-  LoadResult r = loadModel("demo");
-  EXPECT_TRUE(r) << r.error;
-  return std::move(r.model);
-}
-
 TEST(Progressive, ScheduleDecreasesToTheRequestedDeflection) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto t = Tessellator::create(*m, test::relative(0.0005)).tessellator;
   ASSERT_TRUE(t);
   const auto& s = t->schedule();
@@ -34,7 +28,7 @@ TEST(Progressive, ScheduleDecreasesToTheRequestedDeflection) {
 }
 
 TEST(Progressive, VerticesAreAppendedAndLevelsKept) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto t = Tessellator::create(*m, test::relative(0.001)).tessellator;
   ASSERT_TRUE(t);
   const std::size_t faces = m->faces().size();
@@ -62,7 +56,7 @@ TEST(Progressive, VerticesAreAppendedAndLevelsKept) {
 }
 
 TEST(Progressive, ThreadsGiveTheSameMesh) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto one = Tessellator::create(*m, test::relative(0.001)).tessellator;
   auto four = Tessellator::create(*m, test::relative(0.001)).tessellator;
   ASSERT_TRUE(one->run(1));
@@ -74,7 +68,7 @@ TEST(Progressive, ThreadsGiveTheSameMesh) {
 }
 
 TEST(Progressive, CancellationStopsTheRun) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto t = Tessellator::create(*m, test::relative(0.0001)).tessellator;
   std::atomic<bool> cancel{true};
   EXPECT_FALSE(t->run(2, {}, &cancel));
@@ -88,7 +82,7 @@ TEST(Progressive, CancellationStopsTheRun) {
 }
 
 TEST(Progressive, ProgressReachesTheTotal) {
-  auto m = demo();
+  auto m = test::loadDemo();
   auto t = Tessellator::create(*m, test::relative(0.01)).tessellator;
   std::size_t lastDone = 0, lastTotal = 0;
   ASSERT_TRUE(t->run(2, [&](std::size_t done, std::size_t total) {

@@ -18,6 +18,12 @@ std::string tempPath(const std::string& name) {
   return std::string(dir ? dir : "/tmp") + "/cetview_brep_" + std::to_string(::getpid()) + "_" + name;
 }
 
+std::unique_ptr<Model> loadDemo() {
+  LoadResult r = loadModel("demo");
+  EXPECT_TRUE(r) << r.error;
+  return std::move(r.model);
+}
+
 std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name) {
   LoadResult r = cetview::test::loadShapeThroughFile(shape, tempPath(name + ".brep"));
   EXPECT_TRUE(r) << r.error;

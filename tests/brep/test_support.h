@@ -14,6 +14,8 @@ namespace cetview::brep::test {
 
 // A fresh path in the test's temporary directory (removed by the OS, not by us).
 std::string tempPath(const std::string& name);
+// The built-in demo part; fails the test on a load error.
+std::unique_ptr<Model> loadDemo();
 // Writes shape to a temporary .brep and loads it; fails the test on a load error.
 std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name);
 

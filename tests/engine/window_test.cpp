@@ -25,6 +25,7 @@
 #include "engine/render_to_png.h"
 #include "engine/vk_check.h"
 #include "render_fixture.h"
+#include "support/on_path.h"
 #include "test_meshes.h"
 
 extern char** environ;
@@ -79,26 +80,21 @@ class XvfbServer {
   std::string display_;
 };
 
-bool xvfbInstalled() {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "/usr/bin:/bin";
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    std::size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    if (access((dirs.substr(start, end - start) + "/Xvfb").c_str(), X_OK) == 0) return true;
-    start = end + 1;
-  }
-  return false;
-}
-
 class WindowTest : public VulkanTest {
  protected:
   void SetUp() override {
-    if (!xvfbInstalled()) GTEST_SKIP() << "Xvfb is not installed (Debian: xvfb)";
+    if (!cetview::test::onPath("Xvfb")) GTEST_SKIP() << "Xvfb is not installed (Debian: xvfb)";
     instanceExtensions_ = {VK_KHR_SURFACE_EXTENSION_NAME, VK_KHR_XCB_SURFACE_EXTENSION_NAME};
     VulkanTest::SetUp();
   }
+  // The renderer on the test window's surface, following framebuffer_ as the window system's size.
+  void createRenderer() {
+    ASSERT_NE(surface_, VK_NULL_HANDLE);
+    auto created = Renderer::createWindowed(device_, surface_, [this] { return framebuffer_; });
+    ASSERT_TRUE(created.ok()) << created.error().message;
+    renderer_ = std::move(*created);
+  }
+
   void TearDown() override {
     VulkanTest::TearDown();
     if (connection_) xcb_disconnect(connection_);
@@ -155,10 +151,7 @@ class WindowTest : public VulkanTest {
 };
 
 TEST_F(WindowTest, ResizeMinimiseAndOutOfDateSwapchains) {
-  ASSERT_NE(surface_, VK_NULL_HANDLE);
-  auto created = Renderer::createWindowed(device_, surface_, [this] { return framebuffer_; });
-  ASSERT_TRUE(created.ok()) << created.error().message;
-  renderer_ = std::move(*created);
+  ASSERT_NO_FATAL_FAILURE(createRenderer());
   Renderer& r = *renderer_;
   ASSERT_TRUE(addMesh(r.scene(), cube()).ok());
   Camera camera = standardView(StandardView::kIso, r.scene().bounds(), 320.0f / 240.0f);
@@ -207,10 +200,7 @@ TEST_F(WindowTest, ResizeMinimiseAndOutOfDateSwapchains) {
 // returns kDeviceLost, every later call the same error, and the swapchain, its semaphores and the
 // overlay's frames are torn down cleanly (validation layer on).
 TEST_F(WindowTest, DeviceLossMidLoopEndsWithAnErrorAndCleanTeardown) {
-  ASSERT_NE(surface_, VK_NULL_HANDLE);
-  auto created = Renderer::createWindowed(device_, surface_, [this] { return framebuffer_; });
-  ASSERT_TRUE(created.ok()) << created.error().message;
-  renderer_ = std::move(*created);
+  ASSERT_NO_FATAL_FAILURE(createRenderer());
   Renderer& r = *renderer_;
   ASSERT_TRUE(addMesh(r.scene(), cube()).ok());
   Camera camera = standardView(StandardView::kIso, r.scene().bounds(), 320.0f / 240.0f);
@@ -242,10 +232,7 @@ TEST_F(WindowTest, DeviceLossMidLoopEndsWithAnErrorAndCleanTeardown) {
 // The overlay hook records inside the frame's render pass after the model (the viewer's ImGui
 // panels), and capture() of a window reads back the presented image, overlay included.
 TEST_F(WindowTest, OverlayIsDrawnOverTheModelAndCaptured) {
-  ASSERT_NE(surface_, VK_NULL_HANDLE);
-  auto created = Renderer::createWindowed(device_, surface_, [this] { return framebuffer_; });
-  ASSERT_TRUE(created.ok()) << created.error().message;
-  renderer_ = std::move(*created);
+  ASSERT_NO_FATAL_FAILURE(createRenderer());
   Renderer& r = *renderer_;
   EXPECT_NE(r.renderPass(), VK_NULL_HANDLE);
   EXPECT_GE(r.framesInFlight(), 1u);

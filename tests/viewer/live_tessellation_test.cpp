@@ -16,6 +16,19 @@ namespace cetview::test {
 namespace {
 
 // Polls until the target level is complete (or 60 s pass).
+// The demo part streaming into `scene` with two threads, as the window starts it; null (and a test
+// failure) when it cannot start.
+std::unique_ptr<LiveTessellation> startDemo(engine::Scene& scene) {
+  brep::LoadResult loaded = brep::loadModel("demo");
+  EXPECT_TRUE(loaded) << loaded.error;
+  if (!loaded) return nullptr;
+  LiveOptions options;
+  options.threads = 2;
+  auto created = LiveTessellation::create(std::move(loaded.model), scene, options);
+  EXPECT_TRUE(created.live) << created.error;
+  return std::move(created.live);
+}
+
 bool settle(LiveTessellation& live) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (live.consumer().completeLevel() < live.targetLevel() || !live.idle()) {
@@ -28,14 +41,10 @@ bool settle(LiveTessellation& live) {
 }
 
 TEST(LiveTessellation, SlidersRetargetOneScheduleAndAnglesRestart) {
-  brep::LoadResult loaded = brep::loadModel("demo");
-  ASSERT_TRUE(loaded) << loaded.error;
   engine::Scene scene;
-  LiveOptions options;
-  options.threads = 2;
-  auto created = LiveTessellation::create(std::move(loaded.model), scene, options);
-  ASSERT_TRUE(created.live) << created.error;
-  LiveTessellation& live = *created.live;
+  std::unique_ptr<LiveTessellation> started = startDemo(scene);
+  ASSERT_TRUE(started);
+  LiveTessellation& live = *started;
 
   // The schedule runs from the coarse start down to 0.01% of the diagonal; 0.1% maps to the
   // coarsest level within it.
@@ -132,14 +141,10 @@ namespace {
 // After "finer", once the target level is complete, every face shows it.
 TEST(LiveTessellation, FinerTargetShowsTheWholeLevel) {
   for (int round = 0; round < 10; ++round) {
-    brep::LoadResult loaded = brep::loadModel("demo");
-    ASSERT_TRUE(loaded) << loaded.error;
     engine::Scene scene;
-    LiveOptions options;
-    options.threads = 2;
-    auto created = LiveTessellation::create(std::move(loaded.model), scene, options);
-    ASSERT_TRUE(created.live) << created.error;
-    LiveTessellation& live = *created.live;
+    std::unique_ptr<LiveTessellation> started = startDemo(scene);
+    ASSERT_TRUE(started);
+    LiveTessellation& live = *started;
     // As the window does: move the slider as soon as the level shows, the stream maybe not idle yet.
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (live.consumer().completeLevel() < live.targetLevel() &&

@@ -14,22 +14,10 @@
 #include <string>
 
 #include "engine/image.h"
+#include "support/on_path.h"
 
 namespace cetview::test {
 namespace {
-
-bool onPath(const char* program) {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "/usr/bin:/bin";
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    std::size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    if (access((dirs.substr(start, end - start) + "/" + program).c_str(), X_OK) == 0) return true;
-    start = end + 1;
-  }
-  return false;
-}
 
 std::string outputPath(const std::string& name) {
   mkdir(CETVIEW_TEST_OUTPUT_DIR, 0755);
