@@ -204,14 +204,20 @@ InsertOutcome Triangulator::insertPoint(Point2 p, VertexId* id, TriangleId hint)
   return insertLocated(v, loc);
 }
 
-void Triangulator::insertPoints(const Point2* points, std::size_t count, VertexId* ids, InsertOutcome* outcomes) {
+void Triangulator::insertPoints(const Point2* points, std::size_t count, VertexId* ids, InsertOutcome* outcomes,
+                                const TriangleId* hints) {
   order_.resize(count);
   for (std::size_t i = 0; i < count; ++i) order_[i] = static_cast<std::uint32_t>(i);
   kdPermutation(points, order_.data(), count);
   std::vector<KdRange> queue;
+  const auto triangles = static_cast<TriangleId>(mesh_.triangleCount());
   forEachBreadthFirst(order_.data(), count, queue, [&](std::uint32_t i, std::uint32_t parent) {
     TriangleId hint = lastTouched_;
-    if (parent != UINT32_MAX && ids[parent] != kNoVertex) hint = mesh_.incident(ids[parent]);
+    if (hints && hints[i] < triangles) {
+      hint = hints[i];
+    } else if (parent != UINT32_MAX && ids[parent] != kNoVertex) {
+      hint = mesh_.incident(ids[parent]);
+    }
     const InsertOutcome o = insertPoint(points[i], &ids[i], hint);
     if (outcomes) outcomes[i] = o;
   });

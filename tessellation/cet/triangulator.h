@@ -89,8 +89,10 @@ class Triangulator {
 
   // Refinement: inserts points sequentially, ordered by their own kd permutation. For each input i,
   // ids[i] is the vertex id (new or merged) or kNoVertex when rejected, and outcomes[i] (if not
-  // null) says why. Only accepted points are appended to the vertex array.
-  void insertPoints(const Point2* points, std::size_t count, VertexId* ids, InsertOutcome* outcomes = nullptr);
+  // null) says why. Only accepted points are appended to the vertex array. hints[i] (if not null)
+  // is a triangle at or near points[i] where its walk starts (a refiner knows the triangle it splits).
+  void insertPoints(const Point2* points, std::size_t count, VertexId* ids, InsertOutcome* outcomes = nullptr,
+                    const TriangleId* hints = nullptr);
 
   // One point, walking from `hint` (any triangle, or kNoTriangle for the last one touched).
   InsertOutcome insertPoint(Point2 p, VertexId* id, TriangleId hint = kNoTriangle);

@@ -81,7 +81,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   normal_.clear();
   singular_.clear();
   occurrences_.clear();
-  cache_.clear();
+  records_.clear();
   touched_.clear();
   points_.clear();
 
@@ -326,7 +326,20 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
 }
 
 // ---------------------------------------------------------------------------------------------
-void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const {
+bool FaceMesher::edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  const cet::TriangleId n = m.neighbor(t, i);
+  if (n == cet::kNoTriangle || m.isGhost(n)) return false;
+  const TriangleRecord* r = records_.find(n, m.vertex(n, 0), m.vertex(n, 1), m.vertex(n, 2));
+  if (!r) return false;
+  const int j = m.edgeTo(n, t);
+  if (j < 0 || r->edgeDeviation[j] < 0) return false;
+  deviation = r->edgeDeviation[j], corresponding = r->edgeCorresponding[j];
+  return true;
+}
+
+void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit,
+                                  TriangleRecord& r) const {
   const cet::CetMesh& m = cdt_->mesh();
   cet::VertexId v[3];
   gp_Pnt P[3];
@@ -338,7 +351,7 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
     U[i] = mesh.uv[2 * o], V[i] = mesh.uv[2 * o + 1];
   }
   r = TriangleRecord{};
-  r.a = v[0], r.b = v[1], r.c = v[2];
+  r.v[0] = v[0], r.v[1] = v[1], r.v[2] = v[2];
   const double c = settings_.coincident;
   const bool collapsed = P[0].IsEqual(P[1], c) || P[1].IsEqual(P[2], c) || P[0].IsEqual(P[2], c);
   double longest = 0, longestFree = 0;
@@ -350,85 +363,102 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, Trian
   }
   r.longest = static_cast<float>(longest);
 
+  if (!collapsed) {
+    // Regularity: corner normals. Poles and apexes have no meaningful normal to compare, and the two
+    // ends of a boundary segment are fixed by the edge discretisation: no interior point changes
+    // them. Nor does any point change the normals' jump across a crease of the surface: an edge
+    // across one is left to the chordal test (splitting it for the angle would go on down to the
+    // minimum size all along the crease).
+    double minCos = 1;
+    bool acrossCrease = false;
+    for (int i = 0; i < 3; ++i) {
+      const cet::VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
+      if (eval_.crossesCrease(U[(i + 1) % 3], V[(i + 1) % 3], U[(i + 2) % 3], V[(i + 2) % 3])) {
+        acrossCrease = true;
+        continue;
+      }
+      if (singular_[a] || singular_[b] || m.isConstrained(t, i)) continue;
+      const double cosine = normal_[a].Dot(normal_[b]);
+      if (cosine < minCos) minCos = cosine, r.angleEdge = static_cast<std::uint8_t>(i);
+    }
+    r.normalCos = static_cast<float>(minCos);
+
+    // Orientation against the surface.
+    const gp_Vec n = gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
+    gp_Vec ref(0, 0, 0);
+    for (int i = 0; i < 3; ++i)
+      if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
+    if (n.Magnitude() <= 1e-12 * longest * longest) {  // the measure's notion of no area (brep/measure.h)
+      r.flags |= TriangleRecord::kFlipped;
+    } else if (ref.Magnitude() > 0 && !acrossCrease) {  // corner normals from both sides of a crease: no reference
+      r.facetCos = static_cast<float>(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()));
+    }
+    // A triangle the angle splits anyway needs no chordal samples (most triangles of a finely
+    // curved surface end this way): refine() measures it if a later rule would keep it.
+    if (angleSplit.splits(r)) {
+      r.flags |= TriangleRecord::kUnmeasured;
+      return;
+    }
+  }
+
   // Chordal: samples of the flat triangle projected onto the surface. The corresponding-point
   // distance |S(uv) - M| at the same samples guards the other direction: a triangle whose UV region
   // maps far from it (spanning a seam, or collapsed on a pole with a whole sector behind it) does not
   // cover its part of the surface, however close its own points are.
   double worst = -1, worstCorresponding = -1;
   std::uint8_t worstCorrespondingSample = 0;
-  auto sample = [&](double b0, double b1, double b2, std::uint8_t id) {
+  auto note = [&](double d, double corresponding, std::uint8_t id) {
+    if (d > worst) worst = d, r.worstSample = id;
+    if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
+  };
+  auto sample = [&](double b0, double b1, double b2, double& d, double& corresponding) {
     const double b[3] = {b0, b1, b2};
     double u = 0, w = 0;
     eval_.blend(3, b, U, V, u, w);
     const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
-    double corresponding = 0;
-    const double d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding);
+    corresponding = 0;
+    d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding);
     if (collapsed) corresponding = d;
-    if (d > worst) worst = d, r.worstSample = id;
-    if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
   };
-  sample(1.0 / 3, 1.0 / 3, 1.0 / 3, 0);
+  double d = 0, corresponding = 0;
+  sample(1.0 / 3, 1.0 / 3, 1.0 / 3, d, corresponding);
+  note(d, corresponding, 0);
+  if (freeform_) {
+    // Free-form surfaces can bend inside a triangle between the centroid and the edge midpoints
+    // (bumps narrower than the triangle): the barycentric grid of step 1/4 as the measurement uses,
+    // reported as the nearest of the four split points.
+    static const double kInner[3][3] = {{.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}};
+    for (const auto& b : kInner) {
+      sample(b[0], b[1], b[2], d, corresponding);
+      note(d, corresponding, 0);
+    }
+  }
   // Edge i runs between corners i+1 and i+2; a constrained edge is a boundary chord, already
-  // within tolerance by the edge discretisation.
+  // within tolerance by the edge discretisation. An edge's samples (its midpoint; on free-form
+  // surfaces also its quarter points) depend on the edge alone: the neighbour across it may have them.
   for (int i = 0; i < 3; ++i) {
     if (m.isConstrained(t, i)) continue;
-    double b[3] = {0.5, 0.5, 0.5};
-    b[i] = 0;
-    sample(b[0], b[1], b[2], static_cast<std::uint8_t>(1 + i));
-  }
-  if (freeform_) {
-    // Free-form surfaces can bend inside a triangle between the samples above (bumps narrower than
-    // the triangle): the barycentric grid of step 1/4 as the measurement uses, reported as the
-    // nearest of the four split points.
-    static const double kGrid[9][3] = {{.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}, {.75, .25, 0}, {.25, .75, 0},
-                                       {0, .75, .25},  {0, .25, .75}, {.25, 0, .75}, {.75, 0, .25}};
-    for (const auto& b : kGrid) {
-      int zero = -1;
-      for (int i = 0; i < 3; ++i)
-        if (b[i] == 0) zero = i;
-      if (zero >= 0 && m.isConstrained(t, zero)) continue;
-      sample(b[0], b[1], b[2], zero >= 0 ? static_cast<std::uint8_t>(1 + zero) : 0);
+    if (!collapsed && edgeSamplesFromNeighbour(t, i, r.edgeDeviation[i], r.edgeCorresponding[i])) {
+      note(r.edgeDeviation[i], r.edgeCorresponding[i], static_cast<std::uint8_t>(1 + i));
+      continue;
     }
+    double edgeWorst = -1, edgeCorresponding = -1;
+    for (const double f : {0.5, 0.25, 0.75}) {
+      if (f != 0.5 && !freeform_) break;
+      double b[3] = {0, 0, 0};
+      b[(i + 1) % 3] = f, b[(i + 2) % 3] = 1 - f;
+      sample(b[0], b[1], b[2], d, corresponding);
+      edgeWorst = std::max(edgeWorst, d), edgeCorresponding = std::max(edgeCorresponding, corresponding);
+    }
+    note(edgeWorst, edgeCorresponding, static_cast<std::uint8_t>(1 + i));
+    if (!collapsed) r.edgeDeviation[i] = static_cast<float>(edgeWorst), r.edgeCorresponding[i] = static_cast<float>(edgeCorresponding);
   }
   if (collapsed || worstCorresponding > longest) {
     worst = worstCorresponding;
     r.worstSample = worstCorrespondingSample;
   }
   r.deviation = static_cast<float>(std::max(worst, 0.0));
-  if (collapsed) {
-    r.flags = TriangleRecord::kCollapsed;
-    return;
-  }
-
-  // Regularity: corner normals. Poles and apexes have no meaningful normal to compare, and the two
-  // ends of a boundary segment are fixed by the edge discretisation: no interior point changes them.
-  // Nor does any point change the normals' jump across a crease of the surface: an edge across one
-  // is left to the chordal test (splitting it for the angle would go on down to the minimum size
-  // all along the crease).
-  double maxAngle = 0;
-  bool acrossCrease = false;
-  for (int i = 0; i < 3; ++i) {
-    const cet::VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
-    if (eval_.crossesCrease(U[(i + 1) % 3], V[(i + 1) % 3], U[(i + 2) % 3], V[(i + 2) % 3])) {
-      acrossCrease = true;
-      continue;
-    }
-    if (singular_[a] || singular_[b] || m.isConstrained(t, i)) continue;
-    const double angle = normal_[a].Angle(normal_[b]);
-    if (angle > maxAngle) maxAngle = angle, r.angleEdge = static_cast<std::uint8_t>(i);
-  }
-  r.normalAngle = static_cast<float>(maxAngle);
-
-  // Orientation against the surface.
-  const gp_Vec n = gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
-  gp_Vec ref(0, 0, 0);
-  for (int i = 0; i < 3; ++i)
-    if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
-  if (n.Magnitude() <= 1e-12 * longest * longest) {  // the measure's notion of no area (brep/measure.h)
-    r.flags |= TriangleRecord::kFlipped;
-  } else if (ref.Magnitude() > 0 && !acrossCrease) {  // corner normals from both sides of a crease: no reference
-    r.facetCos = static_cast<float>(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()));
-  }
+  if (collapsed) r.flags = TriangleRecord::kCollapsed;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -586,6 +616,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
   // A facet more than 70 degrees off its corners' normals is nearly edge-on: a flip waiting to happen.
   // (Long thin triangles on a curved surface tilt less; splitting them would only make more.)
   const double foldCos = std::cos(70.0 * M_PI / 180.0);
+  const AngleSplit angleSplit{static_cast<float>(std::cos(level.angleRad * (1 + 1e-6))), static_cast<float>(minSize)};
   std::vector<gp_Pnt2d> uvs;
   if (kDebugRefine) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
@@ -595,14 +626,16 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     const cet::CetMesh& m = cdt_->mesh();
     points_.clear();
     uvs.clear();
+    splitTriangles_.clear();
     const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
     for (cet::TriangleId t = 0; t < triangles; ++t) {
       if (m.isGhost(t) || m.isOutside(t)) continue;
-      const TriangleRecord* r = cache_.find(m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2));
+      const TriangleRecord* r = records_.find(t, m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2));
       TriangleRecord fresh;
+      if (r && (r->flags & TriangleRecord::kUnmeasured) && !angleSplit.splits(*r)) r = nullptr;  // a looser angle now
       if (!r) {
-        evaluateTriangle(t, mesh, fresh);
-        cache_.insert(fresh);
+        evaluateTriangle(t, mesh, angleSplit, fresh);
+        records_.store(t, fresh);
         r = &fresh;
       }
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
@@ -611,7 +644,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         at = r->worstSample;
       } else if (r->flags & TriangleRecord::kCollapsed) {
         at = -1;
-      } else if (r->normalAngle > level.angleRad * (1 + 1e-6) && r->longest > minSize) {
+      } else if (angleSplit.splits(*r)) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < foldCos) && r->longest > minSize) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
@@ -646,12 +679,12 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) {
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;
-        cache_.insert(stuck);
+        records_.store(t, stuck);
         continue;
       }
       if (kDebugRefine) {
-        std::fprintf(stderr, "pass %d: triangle %u (deviation %g, angle %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
-                     pass, t, r->deviation, r->normalAngle, r->longest, r->flags, u, v);
+        std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
+                     pass, t, r->deviation, r->normalCos, r->longest, r->flags, u, v);
       }
       // A point the predicates cannot handle is no split: refinement towards a corner (a pole, a
       // sliver) must not end in underflowing coordinates.
@@ -660,12 +693,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
       points_.push_back(q);
+      splitTriangles_.push_back(t);
     }
     if (points_.empty()) return true;
     const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
     ids_.assign(points_.size(), cet::kNoVertex);
     outcomes_.assign(points_.size(), cet::InsertOutcome::kOutside);
-    cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data());
+    cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data(), splitTriangles_.data());
     const auto countAfter = static_cast<cet::VertexId>(cdt_->vertexCount());
     if (countAfter == countBefore) return true;  // every request merged or rejected: nothing left to gain
     std::vector<std::uint32_t> inputOf(countAfter - countBefore, UINT32_MAX);
@@ -712,7 +746,7 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
 
 FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report) {
   cdt_.reset();
-  cache_.clear();
+  records_.clear();
   fallback_ = true;
   std::vector<std::uint32_t> indices;
   std::string failure;
@@ -730,7 +764,7 @@ FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceR
 // where finer ones do not): that level shows the fallback mesh, and the next level starts afresh.
 FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report) {
   cdt_.reset();
-  cache_.clear();
+  records_.clear();
   if (deferredIndices_.empty()) {
     std::string failure;
     if (!meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle, mesh,

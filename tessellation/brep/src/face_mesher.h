@@ -17,7 +17,7 @@
 #include "cet/triangulator.h"
 #include "face_topology.h"
 #include "surface_eval.h"
-#include "triangle_cache.h"
+#include "triangle_records.h"
 
 namespace cetview::brep {
 
@@ -70,7 +70,10 @@ class FaceMesher {
   // or, when p is null, the surface point.
   void appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p);
   cet::Point2 scaled(double u, double v) const { return eval_.scaled(u, v); }
-  void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r) const;
+  // Measures triangle t into r; chordal samples are skipped when angleSplit splits it anyway.
+  void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit, TriangleRecord& r) const;
+  // The samples of edge i of t as the triangle across it measured them, if its record is current.
+  bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
@@ -100,7 +103,7 @@ class FaceMesher {
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
   std::vector<std::uint8_t> singular_;  // normal not defined by first derivatives (pole, apex)
   std::vector<Occurrence> occurrences_;
-  TriangleCache cache_;
+  TriangleRecords records_;
   bool repaired_ = false;
   std::vector<std::string> repairs_;
   bool fallback_ = false;
@@ -110,6 +113,7 @@ class FaceMesher {
   // Scratch.
   std::vector<cet::Point2> points_;
   std::vector<cet::VertexId> ids_;
+  std::vector<cet::TriangleId> splitTriangles_;  // the triangle each point of points_ splits
   std::vector<cet::InsertOutcome> outcomes_;
   std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
   int passStamp_ = 0;         // counts passes over all levels

@@ -1,0 +1,66 @@
+// What the refinement measured on a triangle, kept per triangle id of the face's triangulator. A
+// triangle is evaluated once in its life: later passes and later levels find its record as long as
+// the triangle at that id still has the same corners (an operator that changes a triangle changes
+// its corners, and the record no longer matches). The samples on each edge are kept too: the
+// neighbour across the edge, evaluated later, takes them instead of projecting the same points again.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "cet/types.h"
+
+namespace cetview::brep {
+
+struct TriangleRecord {
+  cet::VertexId v[3] = {cet::kNoVertex, cet::kNoVertex, cet::kNoVertex};  // corners when evaluated
+  float deviation = 0;  // largest sampled distance to the surface
+  float normalCos = 1;  // cosine of the largest angle between corner normals
+  float longest = 0;    // longest 3D edge
+  float facetCos = 1;   // cosine between the facet normal and its corners' mean surface normal
+  // Samples on edge i (opposite corner i): largest projected and corresponding-point distances;
+  // negative when the edge was not sampled (a constrained edge, a collapsed triangle).
+  float edgeDeviation[3] = {-1, -1, -1};
+  float edgeCorresponding[3] = {-1, -1, -1};
+  std::uint8_t worstSample = 0;                // 0 centroid, 1 + i the midpoint of edge i (opposite corner i)
+  std::uint8_t angleEdge = 0;                  // edge whose ends' normals differ most
+  std::uint8_t longestFreeEdge = 3;            // longest unconstrained edge (3: none)
+  std::uint8_t flags = 0;                      // kFlipped | kCollapsed | kStuck | kUnmeasured
+  static constexpr std::uint8_t kFlipped = 1;  // no area, or no usable corner normal to compare
+  static constexpr std::uint8_t kCollapsed = 2;   // two corners share a 3D point (pole, gap): dropped
+  static constexpr std::uint8_t kStuck = 4;       // no safe split point (see FaceMesher::safeSplit)
+  static constexpr std::uint8_t kUnmeasured = 8;  // the angle split it: no chordal samples taken
+
+  bool matches(cet::VertexId a, cet::VertexId b, cet::VertexId c) const {
+    return v[0] == a && v[1] == b && v[2] == c;
+  }
+};
+
+// The regularity rule of a level: a triangle whose corner normals differ by more than the angle is
+// split, unless it is already smaller than the level's minimum size.
+struct AngleSplit {
+  float minCos = -1;  // cosine of the angle tolerance
+  float minSize = 0;
+  bool splits(const TriangleRecord& r) const { return r.normalCos < minCos && r.longest > minSize; }
+};
+
+class TriangleRecords {
+ public:
+  // The record of triangle t if it was evaluated with corners (a, b, c) in this order, else null.
+  const TriangleRecord* find(cet::TriangleId t, cet::VertexId a, cet::VertexId b, cet::VertexId c) const {
+    if (t >= records_.size()) return nullptr;
+    const TriangleRecord& r = records_[t];
+    return r.matches(a, b, c) ? &r : nullptr;
+  }
+  void store(cet::TriangleId t, const TriangleRecord& record) {
+    if (t >= records_.size()) records_.resize(std::max<std::size_t>(t + 1, records_.size() * 3 / 2));
+    records_[t] = record;
+  }
+  void clear() { std::vector<TriangleRecord>().swap(records_); }
+
+ private:
+  std::vector<TriangleRecord> records_;
+};
+
+}  // namespace cetview::brep
