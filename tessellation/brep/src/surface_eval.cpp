@@ -14,9 +14,6 @@ namespace cetview::brep {
 
 SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False) {
   geom_ = BRep_Tool::Surface(face);
-  if (surface_.GetType() == GeomAbs_BSplineSurface) {
-    spans_ = std::make_unique<SplineSpans>(surface_.Surface().BSpline(), surface_.Trsf());
-  }
   uPeriodic_ = surface_.IsUPeriodic();
   vPeriodic_ = surface_.IsVPeriodic();
   su0_ = surface_.FirstUParameter(), su1_ = surface_.LastUParameter();
@@ -191,25 +188,9 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
   return false;
 }
 
-void SurfaceEval::d0(double u, double v, gp_Pnt& p) const {
-  if (spans_) {
-    spans_->d0(u, v, p);
-  } else {
-    surface_.D0(u, v, p);
-  }
-}
-
-void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {
-  if (spans_) {
-    spans_->d1(u, v, p, du, dv);
-  } else {
-    surface_.D1(u, v, p, du, dv);
-  }
-}
-
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;
-  d1(u, v, p, du, dv);
+  surface_.D1(u, v, p, du, dv);
   const gp_Vec c = du.Crossed(dv);
   const double m = c.Magnitude();
   // Regular where both derivatives are well away from zero against their typical lengths (at a pole
@@ -228,7 +209,7 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   const double um = 0.5 * (uMin + uMax), vm = 0.5 * (vMin + vMax);
   for (double f : {1e-6, 1e-4, 1e-2}) {
     gp_Pnt q;
-    d1(u + f * (um - u), v + f * (vm - v), q, du, dv);
+    surface_.D1(u + f * (um - u), v + f * (vm - v), q, du, dv);
     const gp_Vec c2 = du.Crossed(dv);
     if (c2.Magnitude() > 1e-300) {
       n = gp_Dir(c2);
@@ -264,7 +245,7 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
   for (int it = 0; it <= maxIter; ++it) {
-    d1(u, v, s, du, dv);
+    surface_.D1(u, v, s, du, dv);
     const gp_Vec r(s, m);
     const double d = r.Magnitude();
     if (it == 0 && start) *start = d;
@@ -283,7 +264,7 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
     if (!uPeriodic_ && (u < su0_ || u > su1_)) u = std::clamp(u, su0_, su1_), clamped = true;
     if (!vPeriodic_ && (v < sv0_ || v > sv1_)) v = std::clamp(v, sv0_, sv1_), clamped = true;
     if (move < settle * d) {
-      const gp_Pnt s2 = point(u, v);
+      const gp_Pnt s2 = surface_.Value(u, v);
       const double d2 = s2.Distance(m);
       if (d2 < best) best = d2, bu = u, bv = v;
       break;

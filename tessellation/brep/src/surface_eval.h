@@ -3,7 +3,6 @@
 // thread: the adaptor caches B-spline spans.
 #pragma once
 
-#include <memory>
 #include <vector>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -14,7 +13,6 @@
 #include <gp_Vec.hxx>
 
 #include "cet/types.h"
-#include "spline_spans.h"
 
 namespace cetview::brep {
 
@@ -28,11 +26,7 @@ class SurfaceEval {
   // defined by first derivatives (poles, apexes); the normal then comes from higher derivatives or
   // the neighbourhood, and may still be a poor choice for angle tests.
   bool pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
-  gp_Pnt point(double u, double v) const {
-    gp_Pnt p;
-    d0(u, v, p);
-    return p;
-  }
+  gp_Pnt point(double u, double v) const { return surface_.Value(u, v); }
 
   // Distance from m to the surface, by Gauss-Newton from (u, v) (updated to the foot point). Each
   // iterate is a surface point, so the result never underestimates the distance to the nearest
@@ -79,9 +73,6 @@ class SurfaceEval {
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
  private:
-  // The surface's point and first derivatives (B-splines through their span table).
-  void d0(double u, double v, gp_Pnt& p) const;
-  void d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const;
   double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
                      double settle = 1e-3) const;
 
@@ -100,7 +91,6 @@ class SurfaceEval {
   Axis uAxis_, vAxis_;
 
   BRepAdaptor_Surface surface_;
-  std::unique_ptr<SplineSpans> spans_;  // B-spline surfaces only
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
