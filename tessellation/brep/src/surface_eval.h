@@ -33,8 +33,9 @@ class SurfaceEval {
   // point found. maxIter bounds the derivative evaluations.
   // `start` (if given) receives |S(u, v) - m| at the starting (u, v): the corresponding-point distance.
   double project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start = nullptr) const;
-  // The refinement's estimate of the same: Gauss-Newton stops once a step moves the foot by less than
-  // a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
+  // The refinement's estimate of the same: on planes, cylinders, cones, spheres and tori the exact
+  // distance to the surface in closed form; otherwise Gauss-Newton that stops once a step moves the
+  // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
   double projectOnce(const gp_Pnt& m, double u, double v, double* start) const;
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
@@ -77,6 +78,16 @@ class SurfaceEval {
                      double settle = 1e-3) const;
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
+
+  // Distance from m to an elementary surface (the whole surface, not only the face), or -1 when
+  // the surface is not elementary.
+  double elementaryDistance(const gp_Pnt& m) const;
+  GeomAbs_SurfaceType type_ = GeomAbs_OtherSurface;
+  gp_Pnt origin_;        // plane origin; axis point of cylinders, cones and tori; sphere centre
+  gp_Dir axis_;          // plane normal; axis of cylinders, cones and tori
+  double radius_ = 0;    // cylinder, sphere, torus major radius; cone radius at origin_
+  double minor_ = 0;     // torus minor radius
+  double cosA_ = 1, sinA_ = 0;  // cone semi-angle
 
   // One direction's scaling: x = x[k] + (t - t[k]) * slope[k] in span k (extended linearly past the
   // ends, repeated with the period when periodic). One span: x = (t - t[0]) * slope[0].
