@@ -275,7 +275,10 @@ double SurfaceEval::elementaryDistance(const gp_Pnt& m) const {
     case GeomAbs_Sphere:
       return std::abs(w.Modulus() - radius_);
     case GeomAbs_Torus:
-      return std::abs(std::hypot(radial - radius_, along) - minor_);
+      // The plane through the axis and m cuts the torus in two circles of the minor radius, about
+      // (+major, 0) and (-major, 0); both matter when the minor radius is the larger (a spindle torus).
+      return std::min(std::abs(std::hypot(radial - radius_, along) - minor_),
+                      std::abs(std::hypot(radial + radius_, along) - minor_));
     default:
       return -1;
   }
