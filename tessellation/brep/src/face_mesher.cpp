@@ -73,6 +73,22 @@ void FaceMesher::appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* 
   singular_.push_back(regular ? 0 : 1);
 }
 
+// Where an edge's pcurve and its 3D curve disagree (an edge of large tolerance, common in IGES),
+// the pcurve's (u, v) maps to a surface point away from the shared 3D edge point, and the
+// triangles between such boundary points and interior points (which sit at their own (u, v)) fold
+// over the gap. The (u, v) of the edge point's foot on the surface keeps the two consistent.
+gp_Pnt2d FaceMesher::boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) const {
+  gp_Pnt2d uv = le.pcurve->Value(le.pcurveParameter(t)).Translated(le.shift);
+  const double gap = eval_.point(uv.X(), uv.Y()).Distance(p);
+  if (!(gap > 0.05 * settings_.finalChordal)) return uv;
+  double u = uv.X(), v = uv.Y();
+  const double foot = eval_.project(p, u, v, 8);
+  // Only a nearby foot clearly better than the pcurve's point (no jump across the face).
+  const double reach = 0.5 * std::max(eval_.uMax - eval_.uMin, eval_.vMax - eval_.vMin);
+  if (foot < 0.5 * gap && std::abs(u - uv.X()) <= reach && std::abs(v - uv.Y()) <= reach) uv.SetCoord(u, v);
+  return uv;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Level 0 (or a rebuild): the whole domain from the edge points of level k.
 bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem) {
@@ -102,7 +118,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       const EdgePoints& ep = edges.points(le.edge, k);
       OccPoints& op = occPoints[l][i];
       for (std::size_t j = 0; j < ep.t.size(); ++j) {
-        op.uv.push_back(le.pcurve->Value(le.pcurveParameter(ep.t[j])).Translated(le.shift));
+        op.uv.push_back(boundaryUV(le, ep.t[j], ep.p[j]));
         op.p.push_back(ep.p[j]);
         if (j > 0) {
           const cet::Point2 a = scaled(op.uv[j - 1].X(), op.uv[j - 1].Y()), b = scaled(op.uv[j].X(), op.uv[j].Y());
@@ -276,7 +292,7 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
       while (j < now.t.size() && now.t[j] <= before.t[o]) ++j;
       pts.clear(), uvs.clear(), ps.clear();
       for (; j < now.t.size() && now.t[j] < before.t[o + 1]; ++j) {
-        uvs.push_back(le.pcurve->Value(le.pcurveParameter(now.t[j])).Translated(le.shift));
+        uvs.push_back(boundaryUV(le, now.t[j], now.p[j]));
         pts.push_back(scaled(uvs.back().X(), uvs.back().Y()));
         ps.push_back(&now.p[j]);
       }
@@ -610,6 +626,11 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
   return false;
 }
 
+bool FaceMesher::onChord(cet::TriangleId t) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  return m.isConstrained(t, 0) || m.isConstrained(t, 1) || m.isConstrained(t, 2);
+}
+
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
@@ -673,9 +694,11 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       const bool tooFar = r->deviation > chordal;
       const bool flipped = (r->flags & TriangleRecord::kFlipped) || r->facetCos < 0;
       // So does a flipped triangle larger than the tolerance (small faces at coarse levels, where a
-      // chord's clearance can cover the whole face): the overrides stop at that size, so they
-      // cannot cascade towards a boundary.
-      const bool override = tooFar || (flipped && r->longest > level.chordal);
+      // chord's clearance can cover the whole face), unless it stands on a boundary chord: its
+      // split points (midpoints of the edges to the chord's ends) come twice as close to the chord
+      // as its apex, and the triangle they make on the chord is flipped as well, as long as the
+      // chord itself: a cascade towards the boundary that no size test stops.
+      const bool override = tooFar || (flipped && r->longest > level.chordal && !onChord(t));
       if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) {
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;

@@ -55,6 +55,9 @@ class FaceMesher {
     bool forward = true;  // the loop runs along increasing parameter
   };
 
+  // The (u, v) of a boundary point: the pcurve's at edge parameter t, moved to the foot of the edge
+  // point p on the surface where the pcurve strays from p.
+  gp_Pnt2d boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) const;
   bool buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
   bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
   // Interior refinement to the level's tolerances; false when cancelled.
@@ -78,6 +81,7 @@ class FaceMesher {
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
   // towards the opposite corner when needed; false when no safe point was found.
+  bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
   bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const;
   void buildChords(const FaceMesh& mesh);
   bool clearOfChords(double u, double v) const;
