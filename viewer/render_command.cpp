@@ -111,6 +111,13 @@ int runRender(const RenderCli& cli) {
   auto created = brep::Tessellator::create(model, params);
   if (!created.tessellator) return fail(2, created.error);
   brep::Tessellator& tess = *created.tessellator;
+  // The workers start at once: level 0 tessellates while Vulkan starts up (lavapipe's pipeline
+  // compilation alone takes about as long as the first level of a large model).
+  const int last = tess.lastLevel();
+  stream::StreamOptions streamOptions;
+  streamOptions.threads = cli.threads;
+  stream::ProgressiveStream producer(tess, last, streamOptions);
+  stream::StreamConsumer consumer(producer, model.faces().size());
 
   Session session;
   engine::InstanceOptions instanceOptions;
@@ -129,11 +136,6 @@ int runRender(const RenderCli& cli) {
   engine::Renderer& r = *session.renderer;
 
   ModelScene link(model, r.scene());
-  const int last = tess.lastLevel();
-  stream::StreamOptions streamOptions;
-  streamOptions.threads = cli.threads;
-  stream::ProgressiveStream producer(tess, last, streamOptions);
-  stream::StreamConsumer consumer(producer, model.faces().size());
   int next = cli.levels ? 0 : last;
   consumer.setShowLevel(next, link);
   const engine::Camera camera = engine::standardView(*view, link.bounds(), r.aspect(), projection);
