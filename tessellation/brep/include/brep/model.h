@@ -44,7 +44,7 @@ struct FaceInfo {
   Color color;              // the face's own colour if it has one, else its part's
   bool hasOwnColor = false;
   bool reversed = false;    // the face is reversed relative to its surface's natural normal
-  double area = 0.0;        // exact surface area (model units squared)
+  double area = 0.0;        // approximate surface area (its parameter box's), for ordering faces
   std::string name;         // empty unless the file names the face
 };
 
