@@ -427,13 +427,16 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     if (d > worst) worst = d, r.worstSample = id;
     if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
   };
+  // A sample whose own surface point is already within the final tolerance passes on every level
+  // (each is at least as coarse): no need to find its foot.
+  const double enough = kDeviationMargin * settings_.finalChordal;
   auto sample = [&](double b0, double b1, double b2, double& d, double& corresponding) {
     const double b[3] = {b0, b1, b2};
     double u = 0, w = 0;
     eval_.blend(3, b, U, V, u, w);
     const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
     corresponding = 0;
-    d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding);
+    d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding, enough);
     if (collapsed) corresponding = d;
   };
   double d = 0, corresponding = 0;

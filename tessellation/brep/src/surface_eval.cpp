@@ -284,17 +284,17 @@ double SurfaceEval::elementaryDistance(const gp_Pnt& m) const {
   }
 }
 
-double SurfaceEval::projectOnce(const gp_Pnt& m, double u, double v, double* start) const {
+double SurfaceEval::projectOnce(const gp_Pnt& m, double u, double v, double* start, double enough) const {
   if (type_ != GeomAbs_OtherSurface) {
     if (start) *start = point(u, v).Distance(m);
     return elementaryDistance(m);
   }
   bool clamped = false;
-  return projectFrom(m, u, v, 3, start, clamped, 0.1);
+  return projectFrom(m, u, v, 3, start, clamped, 0.1, enough);
 }
 
 double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
-                                double settle) const {
+                                double settle, double enough) const {
   gp_Pnt s;
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
@@ -303,6 +303,7 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
     const gp_Vec r(s, m);
     const double d = r.Magnitude();
     if (it == 0 && start) *start = d;
+    if (it == 0 && d <= enough) return d;
     if (d < best) best = d, bu = u, bv = v;
     if (it == maxIter || d == 0) break;
     // Gauss-Newton: [Su.Su Su.Sv; Su.Sv Sv.Sv] (du dv) = (r.Su, r.Sv), lightly damped for poles.

@@ -36,7 +36,8 @@ class SurfaceEval {
   // The refinement's estimate of the same: on planes, cylinders, cones, spheres and tori the exact
   // distance to the surface in closed form; otherwise Gauss-Newton that stops once a step moves the
   // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
-  double projectOnce(const gp_Pnt& m, double u, double v, double* start) const;
+  // A start point within `enough` of m ends it there: |S(u, v) - m| bounds the distance from above.
+  double projectOnce(const gp_Pnt& m, double u, double v, double* start, double enough = 0) const;
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
@@ -75,7 +76,7 @@ class SurfaceEval {
 
  private:
   double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
-                     double settle = 1e-3) const;
+                     double settle = 1e-3, double enough = 0) const;
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
 
