@@ -652,8 +652,9 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     uvs.clear();
     splitTriangles_.clear();
     const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
-    for (cet::TriangleId t = 0; t < triangles; ++t) {
-      if (m.isGhost(t) || m.isOutside(t)) continue;
+    nextWork_.clear();
+    auto visit = [&](cet::TriangleId t) {
+      if (m.isGhost(t) || m.isOutside(t)) return;
       const TriangleRecord* r = records_.find(t, m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2));
       TriangleRecord fresh;
       if (r && (r->flags & TriangleRecord::kUnmeasured) && !angleSplit.splits(*r)) r = nullptr;  // a looser angle now
@@ -676,12 +677,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         // thinner ones).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
       }
-      if (at < 0) continue;
+      if (at < 0) return;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
       // pass crowd each other and leave slivers that need more points.
       if (touched_.size() < m.vertexCount()) touched_.resize(m.vertexCount(), -1);
       if (touched_[m.vertex(t, 0)] == stamp || touched_[m.vertex(t, 1)] == stamp || touched_[m.vertex(t, 2)] == stamp) {
-        continue;
+        nextWork_.push_back(t);  // again next pass
+        return;
       }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
@@ -706,7 +708,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         TriangleRecord stuck = *r;
         stuck.flags |= TriangleRecord::kStuck;
         records_.store(t, stuck);
-        continue;
+        return;
       }
       if (kDebugRefine) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
@@ -715,11 +717,22 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // A point the predicates cannot handle is no split: refinement towards a corner (a pole, a
       // sliver) must not end in underflowing coordinates.
       const cet::Point2 q = scaled(u, v);
-      if (!supported(q)) continue;
+      if (!supported(q)) return;
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
       points_.push_back(q);
       splitTriangles_.push_back(t);
+    };
+    // The first pass looks at every triangle (the tolerances are new); later ones only at the
+    // triangles the previous pass changed (all incident to its new vertices: insertion and Lawson's
+    // flips only make triangles around the inserted point) and those it put off, in id order: a
+    // triangle that needs no split has no effect on the others, so this is the full scan's result.
+    if (pass == 0) {
+      for (cet::TriangleId t = 0; t < triangles; ++t) visit(t);
+    } else {
+      std::sort(work_.begin(), work_.end());
+      work_.erase(std::unique(work_.begin(), work_.end()), work_.end());
+      for (const cet::TriangleId t : work_) visit(t);
     }
     if (points_.empty()) return true;
     const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
@@ -732,6 +745,12 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     for (std::size_t i = 0; i < ids_.size(); ++i)
       if (outcomes_[i] == cet::InsertOutcome::kInserted && ids_[i] >= countBefore) inputOf[ids_[i] - countBefore] = static_cast<std::uint32_t>(i);
     for (cet::VertexId id = countBefore; id < countAfter; ++id) {
+      int around = 0;  // bounded: a vertex has a finite star
+      for (cet::TriangleId t = m.incident(id), first = t; t != cet::kNoTriangle && around < 4096; ++around) {
+        nextWork_.push_back(t);
+        t = m.nextAround(t, id);
+        if (t == first) break;
+      }
       const std::uint32_t i = inputOf[id - countBefore];
       if (i != UINT32_MAX) {
         appendVertex(mesh, uvs[i].X(), uvs[i].Y(), nullptr);
@@ -742,6 +761,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         appendVertex(mesh, u, v, nullptr);
       }
     }
+    work_.swap(nextWork_);
   }
   return true;
 }

@@ -118,6 +118,7 @@ class FaceMesher {
   std::vector<cet::Point2> points_;
   std::vector<cet::VertexId> ids_;
   std::vector<cet::TriangleId> splitTriangles_;  // the triangle each point of points_ splits
+  std::vector<cet::TriangleId> work_, nextWork_;   // triangles a refinement pass looks at (after the first)
   std::vector<cet::InsertOutcome> outcomes_;
   std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
   int passStamp_ = 0;         // counts passes over all levels
