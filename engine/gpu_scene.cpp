@@ -1,6 +1,7 @@
 #include "engine/gpu_scene.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 
 #include <glm/matrix.hpp>
@@ -71,6 +72,7 @@ void GpuScene::reset() {
   edgeSlots_ = RangeAllocator(edgeSlots_.capacity());
   faces_.clear();
   edges_.clear();
+  partDraws_.clear();
   committedIndices_ = 0;
   generation_ = scene_.generation_;
 }
@@ -290,6 +292,7 @@ Status GpuScene::uploadFaces() {
       slot.offset = slot.capacity = 0;
     }
     committedIndices_ = committedIndices_ - before.count + n;
+    if (face.part < partDraws_.size()) partDraws_[face.part].facesDirty = true;
     slot.uploading = false;
     face.queued = false;
     scene_.pendingIndexBytes_ -= n * kIndexSize;
@@ -364,6 +367,7 @@ Status GpuScene::uploadEdges() {
       edgeSlots_.free(slot.offset, slot.capacity);
       slot.offset = slot.capacity = 0;
     }
+    if (edge.part < partDraws_.size()) partDraws_[edge.part].edgesDirty = true;
     slot.uploading = false;
     edge.queued = false;
     scene_.pendingEdgeBytes_ -= edge.pending.size() * sizeof(float);
@@ -444,13 +448,99 @@ void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
   fills_.clear();
 }
 
+GpuScene::PartDraws& GpuScene::partDraws(std::uint32_t part) {
+  if (partDraws_.size() < scene_.parts_.size()) partDraws_.resize(scene_.parts_.size());
+  PartDraws& draws = partDraws_[part];
+  if (draws.facesDirty || draws.sceneVersion != scene_.parts_[part].drawVersion) {
+    buildFaceRuns(part, draws);
+    draws.facesDirty = false;
+    draws.sceneVersion = scene_.parts_[part].drawVersion;
+  }
+  if (draws.edgesDirty) {
+    buildEdgeRuns(part, draws);
+    draws.edgesDirty = false;
+  }
+  return draws;
+}
+
+void GpuScene::buildFaceRuns(std::uint32_t part, PartDraws& draws) {
+  const Scene::Part& p = scene_.parts_[part];
+  // Only faces this GpuScene already knows (tables grow at the start of each upload).
+  std::uint32_t end =
+      std::min<std::uint32_t>(p.firstFace + p.faceCount, static_cast<std::uint32_t>(faces_.size()));
+  std::vector<FaceRun>& runs = draws.byColor;
+  runs.clear();
+  for (std::uint32_t f = p.firstFace; f < end; ++f) {
+    const FaceSlot& slot = faces_[f];
+    const Scene::Face& face = scene_.faces_[f];
+    if (slot.count == 0 || !face.visible) continue;
+    runs.push_back(FaceRun{static_cast<std::uint32_t>(slot.offset), static_cast<std::uint32_t>(slot.count),
+                           packColor(face.color), glm::vec4(0.0f)});
+  }
+  // Merges runs that `sameDraw` allows and whose slots follow each other, in the current order.
+  auto mergeAdjacent = [](std::vector<FaceRun>& list, bool byColor) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (out > 0) {
+        FaceRun& last = list[out - 1];
+        if (last.firstIndex + last.indexCount == list[i].firstIndex &&
+            (!byColor || last.packed == list[i].packed)) {
+          last.indexCount += list[i].indexCount;
+          continue;
+        }
+      }
+      list[out++] = list[i];
+    }
+    list.resize(out);
+  };
+  std::sort(runs.begin(), runs.end(),
+            [](const FaceRun& a, const FaceRun& b) { return a.firstIndex < b.firstIndex; });
+  draws.merged = runs;
+  mergeAdjacent(draws.merged, false);
+  mergeAdjacent(runs, true);
+  for (FaceRun& run : runs) {
+    Color8 c{static_cast<std::uint8_t>(run.packed), static_cast<std::uint8_t>(run.packed >> 8),
+             static_cast<std::uint8_t>(run.packed >> 16), static_cast<std::uint8_t>(run.packed >> 24)};
+    run.color = linearColor(c);
+  }
+}
+
+void GpuScene::buildEdgeRuns(std::uint32_t part, PartDraws& draws) {
+  const Scene::Part& p = scene_.parts_[part];
+  std::uint32_t end =
+      std::min<std::uint32_t>(p.firstEdge + p.edgeCount, static_cast<std::uint32_t>(edges_.size()));
+  std::vector<EdgeRun>& runs = draws.edges;
+  runs.clear();
+  for (std::uint32_t e = p.firstEdge; e < end; ++e) {
+    const EdgeSlot& slot = edges_[e];
+    if (slot.count > 0) {
+      runs.push_back(
+          EdgeRun{static_cast<std::uint32_t>(slot.offset), static_cast<std::uint32_t>(slot.count)});
+    }
+  }
+  std::sort(runs.begin(), runs.end(),
+            [](const EdgeRun& a, const EdgeRun& b) { return a.firstPoint < b.firstPoint; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (out > 0 && runs[out - 1].firstPoint + runs[out - 1].pointCount == runs[i].firstPoint) {
+      runs[out - 1].pointCount += runs[i].pointCount;
+    } else {
+      runs[out++] = runs[i];
+    }
+  }
+  runs.resize(out);
+}
+
 void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
-                               VkPipeline twoSided, VkPipeline culled) const {
+                               VkPipeline twoSided, VkPipeline culled) {
+  faceDrawCalls_ = 0;
+  edgeDrawCalls_ = 0;  // until recordEdgeDraws() (not called without edges)
   if (committedIndices_ == 0) return;
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kVertices].buffer.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, buffers_[kIndices].buffer.buffer, 0, VK_INDEX_TYPE_UINT32);
   std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
+  constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   VkPipeline bound = VK_NULL_HANDLE;
   for (const Scene::Instance& instance : scene_.instances_) {
     if (!instance.visible) continue;
@@ -467,26 +557,37 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       bound = pipeline;
     }
     DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(constants), &constants);
     if (indirect_) {
+      vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
       for (std::uint32_t first = part.firstFace; first < end; first += maxDraws) {
         std::uint32_t count = std::min(end - first, maxDraws);
         vkCmdDrawIndexedIndirect(cmd, buffers_[kFaceDraws].buffer.buffer, first * kFaceDrawSize, count,
                                  static_cast<std::uint32_t>(kFaceDrawSize));
+        ++faceDrawCalls_;
       }
-    } else {
-      for (std::uint32_t f = part.firstFace; f < end; ++f) {
-        const FaceSlot& slot = faces_[f];
-        if (slot.count == 0 || !scene_.faces_[f].visible) continue;
-        vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(slot.count), 1,
-                         static_cast<std::uint32_t>(slot.offset), 0, f);
+      continue;
+    }
+    const PartDraws& draws = partDraws(instance.part);
+    const bool ownColors = constants.color.a < 0.0f;
+    const std::vector<FaceRun>& runs = ownColors ? draws.byColor : draws.merged;
+    if (runs.empty()) continue;
+    if (ownColors) constants.color = runs.front().color;
+    vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
+    std::uint32_t pushed = runs.front().packed;
+    for (const FaceRun& run : runs) {
+      if (ownColors && run.packed != pushed) {
+        vkCmdPushConstants(cmd, layout, kStages, offsetof(DrawConstants, color), sizeof(run.color),
+                           &run.color);
+        pushed = run.packed;
       }
+      vkCmdDrawIndexed(cmd, run.indexCount, 1, run.firstIndex, 0, 0);
+      ++faceDrawCalls_;
     }
   }
 }
 
-void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const {
+void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) {
+  edgeDrawCalls_ = 0;
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kEdgePoints].buffer.buffer, &zero);
   std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
@@ -504,12 +605,12 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
         std::uint32_t count = std::min(end - first, maxDraws);
         vkCmdDrawIndirect(cmd, buffers_[kEdgeDraws].buffer.buffer, first * kEdgeDrawSize, count,
                           static_cast<std::uint32_t>(kEdgeDrawSize));
+        ++edgeDrawCalls_;
       }
     } else {
-      for (std::uint32_t e = part.firstEdge; e < end; ++e) {
-        const EdgeSlot& slot = edges_[e];
-        if (slot.count == 0) continue;
-        vkCmdDraw(cmd, static_cast<std::uint32_t>(slot.count), 1, static_cast<std::uint32_t>(slot.offset), e);
+      for (const EdgeRun& run : partDraws(instance.part).edges) {
+        vkCmdDraw(cmd, run.pointCount, 1, run.firstPoint, 0);
+        ++edgeDrawCalls_;
       }
     }
   }

@@ -9,6 +9,14 @@
 //   edgeDraws   VkDrawIndirectCommand per edge
 // Instances are not uploaded: each draw's push constants carry its transform (draw_constants.h).
 //
+// Without multi-draw indirect (lavapipe), draws are issued one by one, and there each costs about
+// 5-10 us of the single-threaded front end (llvmpipe flushes and copies its 33 KB fragment state
+// per draw: at 1M triangles the 1200 edge and 800 face draws of the benchmark were a fifth of it).
+// So each part's edges whose slots follow each other in the edge buffer are drawn as one
+// line list, and its faces as one draw per run of adjacent slots of one colour (the colour goes in
+// the push constants, so no per-face colour reaches the shaders). The runs are kept per part and
+// rebuilt only when a slot, a face colour or a visibility changed.
+//
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
 // face's draw command switches to it in the frame whose copies complete it. The draw command is
@@ -23,6 +31,7 @@
 #include <vector>
 
 #include <vulkan/vulkan.h>
+#include <glm/vec4.hpp>
 
 #include "engine/context.h"
 #include "engine/draw_constants.h"
@@ -37,7 +46,7 @@ struct GpuSceneOptions {
   std::uint64_t initialVertexCapacity = 1u << 16;     // vertices (buffers double when full)
   std::uint64_t initialIndexCapacity = 1u << 18;      // uint32 indices
   std::uint64_t initialEdgePointCapacity = 1u << 14;  // edge points
-  bool indirectDraws = true;  // multi-draw indirect where the device allows; false: one call per face
+  bool indirectDraws = true;  // multi-draw indirect where the device allows; false: one by one, per run
   // Also on CPU devices (lavapipe), where it is off by default: there a multi-draw indirect call
   // that starts past the first command runs about 40x slower than the same draws one by one.
   bool indirectDrawsOnCpu = false;
@@ -73,12 +82,15 @@ class GpuScene {
   // instances of closed solids that are not mirrored and `twoSided` for the rest (both mesh.vert
   // pipelines; they may be the same). Binds the pipelines itself.
   void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
-                       VkPipeline twoSided, VkPipeline culled) const;
+                       VkPipeline twoSided, VkPipeline culled);
   // Inside a render pass with the edge pipeline bound: every edge of every visible instance.
-  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const;
+  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view);
 
   VkBuffer faceColorBuffer() const { return buffers_[kFaceColors].buffer.buffer; }
   bool usesIndirectDraws() const { return indirect_; }
+  // Draw calls the last recordFaceDraws() / recordEdgeDraws() issued (indirect: one per call).
+  std::uint32_t lastFaceDrawCalls() const { return faceDrawCalls_; }
+  std::uint32_t lastEdgeDrawCalls() const { return edgeDrawCalls_; }
   std::uint64_t committedTriangles() const { return committedIndices_ / 3; }  // per instance of each part
   std::uint32_t uploadedVertices() const { return scene_.uploadedVertices_; }
 
@@ -117,7 +129,27 @@ class GpuScene {
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
   };
 
+  // Without indirect draws: consecutive slots merged into one draw (see the top of this file).
+  struct FaceRun {
+    std::uint32_t firstIndex = 0, indexCount = 0;
+    std::uint32_t packed = 0;  // packColor() of the faces' colour
+    glm::vec4 color{0.0f};     // the same, linear
+  };
+  struct EdgeRun {
+    std::uint32_t firstPoint = 0, pointCount = 0;
+  };
+  struct PartDraws {
+    bool facesDirty = true, edgesDirty = true;
+    std::uint64_t sceneVersion = ~std::uint64_t{0};  // Scene::Part::drawVersion the face runs match
+    std::vector<FaceRun> byColor;  // visible faces by colour, then offset; adjacent same-colour merged
+    std::vector<FaceRun> merged;   // the same by offset, colours ignored (an instance colour is used)
+    std::vector<EdgeRun> edges;
+  };
+
   GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options);
+  PartDraws& partDraws(std::uint32_t part);
+  void buildFaceRuns(std::uint32_t part, PartDraws& draws);
+  void buildEdgeRuns(std::uint32_t part, PartDraws& draws);
   Status init();
   void reset();
   // Makes buffers_[t] at least `bytes` large, keeping [0, keepBytes) of its content.
@@ -157,6 +189,8 @@ class GpuScene {
   std::vector<FaceSlot> faces_;
   std::vector<EdgeSlot> edges_;
   std::uint64_t committedIndices_ = 0;
+  std::vector<PartDraws> partDraws_;
+  std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0;
 
   // Per-frame recording state.
   UploadRing* ring_ = nullptr;

@@ -106,6 +106,7 @@ struct PipelineDesc {
   bool depthWrite;
   bool depthBias;  // pushes faces back so lines on them win the depth test
   bool cullBack = false;
+  bool colorPushed = false;  // CETVIEW_SPEC_COLOR_PUSHED, for the face shaders
 };
 
 Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, const TargetFormat& format,
@@ -120,11 +121,16 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
     return fragmentModule.error();
   }
 
+  const VkBool32 colorPushed = desc.colorPushed ? VK_TRUE : VK_FALSE;
+  const VkSpecializationMapEntry specEntry{CETVIEW_SPEC_COLOR_PUSHED, 0, sizeof(VkBool32)};
+  VkSpecializationInfo spec{1, &specEntry, sizeof(colorPushed), &colorPushed};
+
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
   stages[0].module = *vertexModule;
   stages[0].pName = "main";
+  stages[0].pSpecializationInfo = &spec;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = *fragmentModule;
@@ -250,12 +256,7 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
                                     kTriangles, VK_POLYGON_MODE_FILL, false, false, false});
   CETVIEW_TRY(background);
   p.background = *background;
-  auto shaded = createPipeline(device, p, format,
-                               {ShaderId::kMeshVert, ShaderId::kMeshFrag, Input::kMesh, kTriangles,
-                                VK_POLYGON_MODE_FILL, true, true, true});
-  CETVIEW_TRY(shaded);
-  p.shaded = *shaded;
-  PipelineDesc culledDesc{ShaderId::kMeshVert,
+  PipelineDesc shadedDesc{ShaderId::kMeshVert,
                           ShaderId::kMeshFrag,
                           Input::kMesh,
                           kTriangles,
@@ -263,14 +264,26 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
                           true,
                           true,
                           true};
+  shadedDesc.colorPushed = p.colorPushed;
+  auto shaded = createPipeline(device, p, format, shadedDesc);
+  CETVIEW_TRY(shaded);
+  p.shaded = *shaded;
+  PipelineDesc culledDesc = shadedDesc;
   culledDesc.cullBack = true;
   auto shadedCulled = createPipeline(device, p, format, culledDesc);
   CETVIEW_TRY(shadedCulled);
   p.shadedCulled = *shadedCulled;
   if (device.features.fillModeNonSolid) {
-    auto wireframe = createPipeline(device, p, format,
-                                    {ShaderId::kMeshVert, ShaderId::kWireFrag, Input::kMesh, kTriangles,
-                                     VK_POLYGON_MODE_LINE, true, true, false});
+    PipelineDesc wireDesc{ShaderId::kMeshVert,
+                          ShaderId::kWireFrag,
+                          Input::kMesh,
+                          kTriangles,
+                          VK_POLYGON_MODE_LINE,
+                          true,
+                          true,
+                          false};
+    wireDesc.colorPushed = p.colorPushed;
+    auto wireframe = createPipeline(device, p, format, wireDesc);
     CETVIEW_TRY(wireframe);
     p.wireframe = *wireframe;
   }
@@ -281,7 +294,6 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
   p.edges = *edges;
   return {};
 }
-
 
 // Destroys the render pass and the pipelines, keeping the layouts.
 void destroyPassAndPipelines(const Device& device, Pipelines& p) {
@@ -295,8 +307,9 @@ void destroyPassAndPipelines(const Device& device, Pipelines& p) {
 
 }  // namespace
 
-Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format) {
+Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format, bool colorPushed) {
   Pipelines p;
+  p.colorPushed = colorPushed;
   Status status = createLayouts(device, p);
   if (status) status = createPassAndPipelines(device, format, p);
   if (!status) {

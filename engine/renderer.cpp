@@ -85,13 +85,13 @@ Status Renderer::createCommon() {
   CETVIEW_TRY(depth);
   format_.depth = *depth;
   format_.samples = chooseSampleCount(device_, options_.msaaSamples);
-  auto pipelines = createPipelines(device_, format_);
-  CETVIEW_TRY(pipelines);
-  pipelines_ = *pipelines;
-
   auto gpuScene = GpuScene::create(device_, scene_, options_.scene);
   CETVIEW_TRY(gpuScene);
   gpuScene_ = std::move(*gpuScene);
+  // One-by-one draws push each run's colour; indirect ones read the face table.
+  auto pipelines = createPipelines(device_, format_, !gpuScene_->usesIndirectDraws());
+  CETVIEW_TRY(pipelines);
+  pipelines_ = *pipelines;
 
   // Every frame in flight holds at most a budget, and the one being recorded another; a block
   // that does not fit before the ring's end skips the rest of the lap, and in that rare case the
@@ -401,7 +401,8 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
   }
   if (capture && present) {
     if (!swapchain_.transferSrc) {
-      return makeError(ErrorCode::kUnsupported, "this window surface's images cannot be copied (no screenshot)");
+      return makeError(ErrorCode::kUnsupported,
+                       "this window surface's images cannot be copied (no screenshot)");
     }
     // Frames in flight never read back (capture waits for its own frame), so the old buffer is free.
     const VkDeviceSize bytes = VkDeviceSize{extent_.width} * extent_.height * 4;
@@ -447,19 +448,20 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
       toCopy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
       toCopy.image = image;
       toCopy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                           0, nullptr, 0, nullptr, 1, &toCopy);
+      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &toCopy);
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageExtent = {extent_.width, extent_.height, 1};
-      vkCmdCopyImageToBuffer(frame.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
+      vkCmdCopyImageToBuffer(frame.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
+                             &region);
       auto toPresent = toCopy;
       toPresent.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
       toPresent.dstAccessMask = 0;
       toPresent.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
       toPresent.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0,
-                           nullptr, 0, nullptr, 1, &toPresent);
+      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0,
+                           0, nullptr, 0, nullptr, 1, &toPresent);
       memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                     VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     } else if (capture) {

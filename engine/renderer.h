@@ -129,8 +129,13 @@ class Renderer {
   // counts its previous array until the new one is complete).
   std::uint64_t committedTriangles() const { return gpuScene_->committedTriangles(); }
   std::uint32_t swapchainRecreations() const { return recreations_; }
-  // Whether faces are drawn with multi-draw indirect (see GpuSceneOptions) or one call per face.
+  // Whether faces are drawn with multi-draw indirect (see GpuSceneOptions) or one call per run of
+  // faces (gpu_scene.h).
   bool usesIndirectDraws() const { return gpuScene_->usesIndirectDraws(); }
+  // Draw calls the last rendered frame issued for faces and for edges (one by one: one per run of
+  // adjacent slots, see gpu_scene.h; indirect: one per multi-draw call).
+  std::uint32_t lastFaceDrawCalls() const { return gpuScene_->lastFaceDrawCalls(); }
+  std::uint32_t lastEdgeDrawCalls() const { return gpuScene_->lastEdgeDrawCalls(); }
   const Device& device() const { return device_; }
 
   // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.

@@ -139,7 +139,9 @@ Status Scene::setEdgePolyline(EdgeId edge, const float* xyz, std::size_t pointCo
 
 Status Scene::setFaceColor(FaceId face, Color8 color) {
   CETVIEW_TRY(checkFace(face));
-  faces_[toIndex(face)].color = color;
+  Face& f = faces_[toIndex(face)];
+  if (f.color != color) ++parts_[f.part].drawVersion;
+  f.color = color;
   faceColorsDirty_.mark(toIndex(face));
   return {};
 }
@@ -149,6 +151,7 @@ Status Scene::setFaceVisible(FaceId face, bool visible) {
   Face& f = faces_[toIndex(face)];
   if (f.visible == visible) return {};
   f.visible = visible;
+  ++parts_[f.part].drawVersion;
   faceDrawsDirty_.mark(toIndex(face));
   return {};
 }

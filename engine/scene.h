@@ -110,6 +110,7 @@ class Scene {
     Color8 color;
     bool closedSolid = false;
     Bounds bounds;
+    std::uint64_t drawVersion = 0;  // bumped when a face's colour or visibility changes
   };
   struct Instance {
     std::uint32_t part = 0;

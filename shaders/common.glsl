@@ -15,6 +15,12 @@ layout(push_constant) uniform PushBlock {
   DrawConstants draw;
 };
 
+// Specialization constant CETVIEW_SPEC_COLOR_PUSHED of the face pipelines: true where faces are
+// drawn in runs of one colour (devices without multi-draw indirect) and draw.color always holds it,
+// so no colour travels from vertex to fragment (software rasterisers set up every varying per
+// triangle); false: the colour comes from the face table, picked by gl_InstanceIndex.
+layout(constant_id = CETVIEW_SPEC_COLOR_PUSHED) const bool kColorPushed = false;
+
 // sRGB -> linear: a cubic fit of the IEC 61966-2-1 curve (within 0.3%), cheap enough per vertex
 // on software rasterisers where pow() is not.
 vec3 srgbToLinear(vec3 c) {

@@ -22,6 +22,9 @@ using uint = std::uint32_t;
 #define CETVIEW_BINDING_GLOBALS 0  // uniform Globals, one per frame in flight
 #define CETVIEW_BINDING_FACES 1    // storage uint[]: per face, packed sRGB RGBA8 (R in the low byte)
 
+// Specialization constant ids (VkBool32 each).
+#define CETVIEW_SPEC_COLOR_PUSHED 0  // face colour in DrawConstants::color, none per vertex
+
 // Globals.flags.x bits.
 #define CETVIEW_FLAG_ENCODE_SRGB 1u  // the target is UNORM: shaders encode sRGB themselves
 
@@ -48,6 +51,7 @@ struct DrawConstants {
   vec4 keyLight;       // xyz: unit direction towards the key light
   vec4 up;             // xyz: unit screen-up direction (the sky of the hemisphere ambient)
   vec4 color;          // linear RGBA used for every face when a >= 0; a < 0: the per-face colours
+                       // (with CETVIEW_SPEC_COLOR_PUSHED always a colour: the current run's)
 };
 
 #ifdef __cplusplus

@@ -1,6 +1,7 @@
 // Progressive updates on a live renderer: a replaced face changes only its own part of the image,
 // large changes spread over frames within the byte budget without ever showing half a face,
-// buffers grow, visibility and colour toggles, and the direct-draw path matches the indirect one.
+// buffers grow, visibility and colour toggles, the direct-draw path matches the indirect one and
+// merges adjacent faces of one colour.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -201,6 +202,52 @@ TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
   ASSERT_TRUE(r->finishUploads().ok());
   Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
   expectMatchesGolden(shot(*r, camera), "sphere_shaded_edges");
+}
+
+TEST_F(UpdateTest, AdjacentFacesOfOneColourAndAllEdgesAreDrawnInFewCalls) {
+  // One-by-one draws (lavapipe's default) merge the faces whose index slots follow each other and
+  // share a colour, and every edge of a part into one line list; the picture stays the same.
+  MeshData box = cube(2.0f, 4);  // six faces, six colours, twelve edges
+  Renderer* r = load(box);
+  ASSERT_NE(r, nullptr);
+  ASSERT_FALSE(r->usesIndirectDraws()) << "the test must exercise the one-by-one path";
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage sixColours = shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
+  EXPECT_EQ(r->lastEdgeDrawCalls(), 1u);
+
+  // Faces 1 and 2 take face 0's colour: one run of three, then faces 3, 4 and 5.
+  const Color8 first = box.faces[0].color;
+  for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, first).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  RgbaImage merged = shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 4u);
+
+  // A hidden face splits its run; an instance colour ignores the face colours: one draw again.
+  ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, false).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  (void)shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 5u);
+  ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, true).ok());
+  ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, Color8{200, 60, 60, 255}).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  (void)shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 1u);
+  ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, std::nullopt).ok());
+  for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, box.faces[f].color).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  EXPECT_EQ(compareImages(sixColours, shot(*r, camera), 0).differing, 0u);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
+
+  // The merged draws look like the same colours given from the start (this replaces `r`).
+  MeshData recoloured = box;
+  for (std::uint32_t f : {1u, 2u}) recoloured.faces[f].color = first;
+  Renderer* reference = load(recoloured);
+  ASSERT_NE(reference, nullptr);
+  ASSERT_TRUE(reference->finishUploads().ok());
+  EXPECT_EQ(compareImages(shot(*reference, camera), merged, 0).differing, 0u);
 }
 
 TEST_F(UpdateTest, HidingRecolouringAndClearing) {
