@@ -121,9 +121,14 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
     return fragmentModule.error();
   }
 
-  const VkBool32 colorPushed = desc.colorPushed ? VK_TRUE : VK_FALSE;
-  const VkSpecializationMapEntry specEntry{CETVIEW_SPEC_COLOR_PUSHED, 0, sizeof(VkBool32)};
-  VkSpecializationInfo spec{1, &specEntry, sizeof(colorPushed), &colorPushed};
+  // The same constants for every stage; a shader without one of them ignores it.
+  const std::array<VkBool32, 2> specValues{desc.colorPushed ? VK_TRUE : VK_FALSE,
+                                           isSrgbFormat(format.color) ? VK_FALSE : VK_TRUE};
+  const std::array<VkSpecializationMapEntry, 2> specEntries{
+      VkSpecializationMapEntry{CETVIEW_SPEC_COLOR_PUSHED, 0, sizeof(VkBool32)},
+      VkSpecializationMapEntry{CETVIEW_SPEC_ENCODE_SRGB, sizeof(VkBool32), sizeof(VkBool32)}};
+  VkSpecializationInfo spec{static_cast<std::uint32_t>(specEntries.size()), specEntries.data(),
+                            sizeof(specValues), specValues.data()};
 
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;

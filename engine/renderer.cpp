@@ -309,9 +309,6 @@ void Renderer::writeGlobals(Frame& frame, const ViewStyle& style) {
   g.backgroundBottom = linearColor(style.backgroundBottom);
   g.edgeColor = linearColor(style.edgeColor);
   g.lightIntensity = glm::vec4(0.55f, 0.42f, 0.16f, 0.12f);  // headlight, key, sky ambient, specular
-  std::uint32_t flags = 0;
-  if (!isSrgbFormat(format_.color)) flags |= CETVIEW_FLAG_ENCODE_SRGB;
-  g.flags = glm::uvec4(flags, 0u, 0u, 0u);
   std::memcpy(frame.globals.mapped, &g, sizeof(g));
 }
 

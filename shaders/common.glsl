@@ -20,6 +20,8 @@ layout(push_constant) uniform PushBlock {
 // so no colour travels from vertex to fragment (software rasterisers set up every varying per
 // triangle); false: the colour comes from the face table, picked by gl_InstanceIndex.
 layout(constant_id = CETVIEW_SPEC_COLOR_PUSHED) const bool kColorPushed = false;
+// Specialization constant CETVIEW_SPEC_ENCODE_SRGB: the target's format is UNORM (see toTarget).
+layout(constant_id = CETVIEW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
 
 // sRGB -> linear: a cubic fit of the IEC 61966-2-1 curve (within 0.3%), cheap enough per vertex
 // on software rasterisers where pow() is not.
@@ -32,10 +34,12 @@ vec3 linearToSrgb(vec3 c) {
   return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
 }
 
-// Final colour for the target: sRGB targets encode in hardware, UNORM ones need it done here.
+// Final colour for the target: sRGB targets encode in hardware, UNORM ones need it done here. A
+// specialization constant, not a uniform: software rasterisers evaluate both sides of a uniform
+// branch this small, and the unused pow() per pixel was a tenth of a 1M-triangle frame on lavapipe.
 vec4 toTarget(vec3 linearColor) {
   vec3 c = clamp(linearColor, 0.0, 1.0);
-  if ((globals.flags.x & CETVIEW_FLAG_ENCODE_SRGB) != 0u) c = linearToSrgb(c);
+  if (kEncodeSrgb) c = linearToSrgb(c);
   return vec4(c, 1.0);
 }
 

@@ -22,11 +22,9 @@ using uint = std::uint32_t;
 #define CETVIEW_BINDING_GLOBALS 0  // uniform Globals, one per frame in flight
 #define CETVIEW_BINDING_FACES 1    // storage uint[]: per face, packed sRGB RGBA8 (R in the low byte)
 
-// Specialization constant ids (VkBool32 each).
+// Specialization constant ids (VkBool32 each), set by every pipeline (engine/pipelines.cpp).
 #define CETVIEW_SPEC_COLOR_PUSHED 0  // face colour in DrawConstants::color, none per vertex
-
-// Globals.flags.x bits.
-#define CETVIEW_FLAG_ENCODE_SRGB 1u  // the target is UNORM: shaders encode sRGB themselves
+#define CETVIEW_SPEC_ENCODE_SRGB 1   // the target is UNORM: shaders encode sRGB themselves
 
 // Per frame: what every draw of the frame shares.
 struct Globals {
@@ -34,7 +32,6 @@ struct Globals {
   vec4 backgroundBottom;  // gradient colour at the bottom
   vec4 edgeColor;         // B-rep edge lines
   vec4 lightIntensity;    // x headlight, y key light, z ambient (sky), w specular
-  uvec4 flags;            // x: CETVIEW_FLAG_* bits
 };
 
 // Push constants of each draw (one instance of a part). Lighting happens in part space: the CPU
