@@ -292,6 +292,8 @@ Status GpuScene::uploadFaces() {
       slot.offset = slot.capacity = 0;
     }
     committedIndices_ = committedIndices_ - before.count + n;
+    // The culling bounds of what is drawn from now on (one-by-one draws only; see the top of gpu_scene.h).
+    if (!indirect_) slot.bounds = computeFaceCullBounds(scene_.vertices_.data(), face.pending.data(), n);
     if (face.part < partDraws_.size()) partDraws_[face.part].facesDirty = true;
     slot.uploading = false;
     face.queued = false;
@@ -452,7 +454,7 @@ GpuScene::PartDraws& GpuScene::partDraws(std::uint32_t part) {
   if (partDraws_.size() < scene_.parts_.size()) partDraws_.resize(scene_.parts_.size());
   PartDraws& draws = partDraws_[part];
   if (draws.facesDirty || draws.sceneVersion != scene_.parts_[part].drawVersion) {
-    buildFaceRuns(part, draws);
+    buildFaceDraws(part, draws);
     draws.facesDirty = false;
     draws.sceneVersion = scene_.parts_[part].drawVersion;
   }
@@ -463,46 +465,22 @@ GpuScene::PartDraws& GpuScene::partDraws(std::uint32_t part) {
   return draws;
 }
 
-void GpuScene::buildFaceRuns(std::uint32_t part, PartDraws& draws) {
+void GpuScene::buildFaceDraws(std::uint32_t part, PartDraws& draws) {
   const Scene::Part& p = scene_.parts_[part];
   // Only faces this GpuScene already knows (tables grow at the start of each upload).
   std::uint32_t end =
       std::min<std::uint32_t>(p.firstFace + p.faceCount, static_cast<std::uint32_t>(faces_.size()));
-  std::vector<FaceRun>& runs = draws.byColor;
-  runs.clear();
+  std::vector<FaceDraw>& list = draws.faces;
+  list.clear();
   for (std::uint32_t f = p.firstFace; f < end; ++f) {
     const FaceSlot& slot = faces_[f];
     const Scene::Face& face = scene_.faces_[f];
     if (slot.count == 0 || !face.visible) continue;
-    runs.push_back(FaceRun{static_cast<std::uint32_t>(slot.offset), static_cast<std::uint32_t>(slot.count),
-                           packColor(face.color), glm::vec4(0.0f)});
+    list.push_back(FaceDraw{static_cast<std::uint32_t>(slot.offset), static_cast<std::uint32_t>(slot.count),
+                            packColor(face.color), linearColor(face.color), slot.bounds});
   }
-  // Merges runs that `sameDraw` allows and whose slots follow each other, in the current order.
-  auto mergeAdjacent = [](std::vector<FaceRun>& list, bool byColor) {
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      if (out > 0) {
-        FaceRun& last = list[out - 1];
-        if (last.firstIndex + last.indexCount == list[i].firstIndex &&
-            (!byColor || last.packed == list[i].packed)) {
-          last.indexCount += list[i].indexCount;
-          continue;
-        }
-      }
-      list[out++] = list[i];
-    }
-    list.resize(out);
-  };
-  std::sort(runs.begin(), runs.end(),
-            [](const FaceRun& a, const FaceRun& b) { return a.firstIndex < b.firstIndex; });
-  draws.merged = runs;
-  mergeAdjacent(draws.merged, false);
-  mergeAdjacent(runs, true);
-  for (FaceRun& run : runs) {
-    Color8 c{static_cast<std::uint8_t>(run.packed), static_cast<std::uint8_t>(run.packed >> 8),
-             static_cast<std::uint8_t>(run.packed >> 16), static_cast<std::uint8_t>(run.packed >> 24)};
-    run.color = linearColor(c);
-  }
+  std::sort(list.begin(), list.end(),
+            [](const FaceDraw& a, const FaceDraw& b) { return a.firstIndex < b.firstIndex; });
 }
 
 void GpuScene::buildEdgeRuns(std::uint32_t part, PartDraws& draws) {
@@ -534,6 +512,7 @@ void GpuScene::buildEdgeRuns(std::uint32_t part, PartDraws& draws) {
 void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
                                VkPipeline twoSided, VkPipeline culled) {
   faceDrawCalls_ = 0;
+  facesCulled_ = 0;
   edgeDrawCalls_ = 0;  // until recordEdgeDraws() (not called without edges)
   if (committedIndices_ == 0) return;
   VkDeviceSize zero = 0;
@@ -567,22 +546,47 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       }
       continue;
     }
+    // One by one: runs of adjacent slots (of one colour unless the instance has its own), leaving
+    // out the faces that cannot show.
     const PartDraws& draws = partDraws(instance.part);
     const bool ownColors = constants.color.a < 0.0f;
-    const std::vector<FaceRun>& runs = ownColors ? draws.byColor : draws.merged;
-    if (runs.empty()) continue;
-    if (ownColors) constants.color = runs.front().color;
     vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
-    std::uint32_t pushed = runs.front().packed;
-    for (const FaceRun& run : runs) {
-      if (ownColors && run.packed != pushed) {
-        vkCmdPushConstants(cmd, layout, kStages, offsetof(DrawConstants, color), sizeof(run.color),
-                           &run.color);
-        pushed = run.packed;
+    // Whole faces facing away only where the pipeline culls back faces (not in wireframe).
+    const bool backFaces = cull && culled != twoSided;
+    const CullView cullView =
+        makeCullView(constants.modelViewProj, glm::inverse(instance.transform) * view.eye);
+    bool colorPushed = false;
+    std::uint32_t pushed = 0;
+    std::uint32_t runFirst = 0, runCount = 0;
+    const FaceDraw* runFace = nullptr;  // the run's first face (its colour)
+    auto flush = [&] {
+      if (runCount == 0) return;
+      if (ownColors && (!colorPushed || runFace->packed != pushed)) {
+        vkCmdPushConstants(cmd, layout, kStages, offsetof(DrawConstants, color), sizeof(runFace->color),
+                           &runFace->color);
+        colorPushed = true;
+        pushed = runFace->packed;
       }
-      vkCmdDrawIndexed(cmd, run.indexCount, 1, run.firstIndex, 0, 0);
+      vkCmdDrawIndexed(cmd, runCount, 1, runFirst, 0, 0);
       ++faceDrawCalls_;
+      runCount = 0;
+    };
+    for (const FaceDraw& face : draws.faces) {
+      if (outsideFrustum(cullView, face.bounds) || (backFaces && backFacing(cullView, face.bounds))) {
+        ++facesCulled_;
+        continue;
+      }
+      if (runCount > 0 && runFirst + runCount == face.firstIndex &&
+          (!ownColors || runFace->packed == face.packed)) {
+        runCount += face.indexCount;
+        continue;
+      }
+      flush();
+      runFirst = face.firstIndex;
+      runCount = face.indexCount;
+      runFace = &face;
     }
+    flush();
   }
 }
 

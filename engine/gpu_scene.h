@@ -14,8 +14,10 @@
 // per draw: at 1M triangles the 1200 edge and 800 face draws of the benchmark were a fifth of it).
 // So each part's edges whose slots follow each other in the edge buffer are drawn as one
 // line list, and its faces as one draw per run of adjacent slots of one colour (the colour goes in
-// the push constants, so no per-face colour reaches the shaders). The runs are kept per part and
-// rebuilt only when a slot, a face colour or a visibility changed.
+// the push constants, so no per-face colour reaches the shaders). Faces outside the view frustum,
+// and faces of culled closed solids that wholly face away from the eye, are left out as each frame
+// is recorded (face_culling.h). Each part's faces in slot order are kept, rebuilt only when a slot,
+// a face colour or a visibility changed.
 //
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
@@ -35,6 +37,7 @@
 
 #include "engine/context.h"
 #include "engine/draw_constants.h"
+#include "engine/face_culling.h"
 #include "engine/range_allocator.h"
 #include "engine/resources.h"
 #include "engine/scene.h"
@@ -91,6 +94,8 @@ class GpuScene {
   // Draw calls the last recordFaceDraws() / recordEdgeDraws() issued (indirect: one per call).
   std::uint32_t lastFaceDrawCalls() const { return faceDrawCalls_; }
   std::uint32_t lastEdgeDrawCalls() const { return edgeDrawCalls_; }
+  // Face draws (per instance) the last recordFaceDraws() left out as invisible (face_culling.h).
+  std::uint32_t lastFacesCulled() const { return facesCulled_; }
   std::uint64_t committedTriangles() const { return committedIndices_ / 3; }  // per instance of each part
   std::uint32_t uploadedVertices() const { return scene_.uploadedVertices_; }
 
@@ -120,6 +125,7 @@ class GpuScene {
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
     std::uint64_t drawWrittenFrame = 0;  // frame whose copies already hold its draw
     std::uint64_t drawRingOffset = 0;
+    FaceCullBounds bounds;  // of the committed triangles (only without indirect draws)
   };
   struct EdgeSlot {
     std::uint64_t offset = 0, capacity = 0, count = 0;
@@ -129,26 +135,27 @@ class GpuScene {
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
   };
 
-  // Without indirect draws: consecutive slots merged into one draw (see the top of this file).
-  struct FaceRun {
+  // Without indirect draws (see the top of this file): a part's drawable faces in slot order, merged
+  // into runs as each frame is recorded, and its edges merged once.
+  struct FaceDraw {
     std::uint32_t firstIndex = 0, indexCount = 0;
-    std::uint32_t packed = 0;  // packColor() of the faces' colour
+    std::uint32_t packed = 0;  // packColor() of the face's colour
     glm::vec4 color{0.0f};     // the same, linear
+    FaceCullBounds bounds;
   };
   struct EdgeRun {
     std::uint32_t firstPoint = 0, pointCount = 0;
   };
   struct PartDraws {
     bool facesDirty = true, edgesDirty = true;
-    std::uint64_t sceneVersion = ~std::uint64_t{0};  // Scene::Part::drawVersion the face runs match
-    std::vector<FaceRun> byColor;  // visible faces by colour, then offset; adjacent same-colour merged
-    std::vector<FaceRun> merged;   // the same by offset, colours ignored (an instance colour is used)
-    std::vector<EdgeRun> edges;
+    std::uint64_t sceneVersion = ~std::uint64_t{0};  // Scene::Part::drawVersion `faces` matches
+    std::vector<FaceDraw> faces;                     // visible, non-empty, by firstIndex
+    std::vector<EdgeRun> edges;                      // adjacent slots merged, by firstPoint
   };
 
   GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options);
   PartDraws& partDraws(std::uint32_t part);
-  void buildFaceRuns(std::uint32_t part, PartDraws& draws);
+  void buildFaceDraws(std::uint32_t part, PartDraws& draws);
   void buildEdgeRuns(std::uint32_t part, PartDraws& draws);
   Status init();
   void reset();
@@ -190,7 +197,7 @@ class GpuScene {
   std::vector<EdgeSlot> edges_;
   std::uint64_t committedIndices_ = 0;
   std::vector<PartDraws> partDraws_;
-  std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0;
+  std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0, facesCulled_ = 0;
 
   // Per-frame recording state.
   UploadRing* ring_ = nullptr;
