@@ -4,6 +4,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "engine/triangle_order.h"
+
 namespace cetview::engine {
 namespace {
 
@@ -106,6 +108,7 @@ Status Scene::setFaceIndices(FaceId face, const std::uint32_t* indices, std::siz
 
   if (f.queued) pendingIndexBytes_ -= f.pending.size() * sizeof(std::uint32_t);
   f.pending.assign(indices, indices + count);
+  reorderForVertexReuse(f.pending);
   pendingIndexBytes_ += count * sizeof(std::uint32_t);
   f.requiredVertices = required;
   ++f.serial;

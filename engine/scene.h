@@ -67,7 +67,8 @@ class Scene {
   std::uint32_t appendVertices(const MeshVertex* vertices, std::size_t count);
 
   // Face `face`'s triangles are now `indices` (count a multiple of 3, each < vertexCount()),
-  // replacing the previous array (any length; 0 empties the face). Copies the indices.
+  // replacing the previous array (any length; 0 empties the face). Copies the indices; a face of
+  // 256 triangles or more has its triangles reordered for vertex reuse (each keeps its winding).
   // Errors: kInvalidArgument (unknown face, count not a multiple of 3, index out of range).
   Status setFaceIndices(FaceId face, const std::uint32_t* indices, std::size_t count);
 
