@@ -354,6 +354,10 @@ VkSampleCountFlagBits chooseSampleCount(const Device& device, std::uint32_t requ
   return VK_SAMPLE_COUNT_1_BIT;
 }
 
+bool preferSrgbTarget(const Device& device, VkSampleCountFlagBits samples) {
+  return device.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU || samples != VK_SAMPLE_COUNT_1_BIT;
+}
+
 bool isSrgbFormat(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R8G8B8A8_SRGB:

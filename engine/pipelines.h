@@ -44,7 +44,13 @@ void destroyPipelines(const Device& device, Pipelines& pipelines);
 Result<VkFormat> chooseDepthFormat(const Device& device);
 // The largest supported count <= `requested` (rounded down to a power of two) for colour and depth.
 VkSampleCountFlagBits chooseSampleCount(const Device& device, std::uint32_t requested);
-// True for *_SRGB formats: the hardware encodes; otherwise shaders must (CETVIEW_FLAG_ENCODE_SRGB).
+// True for *_SRGB formats: the hardware encodes; otherwise shaders must (CETVIEW_SPEC_ENCODE_SRGB).
 bool isSrgbFormat(VkFormat format);
+// Whether targets (window and offscreen) drawn with `samples` should be *_SRGB formats: on GPUs,
+// where encoding is free, and with MSAA, whose resolve must average linear values. Not on CPU
+// devices without MSAA (their default): llvmpipe's sRGB store cost lavapipe about 6% of a
+// 1M-triangle frame, more than the shaders' own encoding into a UNORM target (toTarget() in
+// shaders/common.glsl).
+bool preferSrgbTarget(const Device& device, VkSampleCountFlagBits samples);
 
 }  // namespace cetview::engine

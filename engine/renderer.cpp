@@ -11,13 +11,16 @@
 namespace cetview::engine {
 namespace {
 
-// A colour format for the offscreen image that can be rendered to and copied from: sRGB first, so
-// headless frames match the window's, then UNORM (the shaders encode sRGB themselves).
-Result<VkFormat> chooseOffscreenFormat(const Device& device) {
+// A colour format for the offscreen image that can be rendered to and copied from, in the window's
+// order of preference (preferSrgbTarget()), so headless frames match the window's.
+Result<VkFormat> chooseOffscreenFormat(const Device& device, VkSampleCountFlagBits samples) {
   constexpr VkFormatFeatureFlags kNeeded =
       VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
-  for (VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM,
-                          VK_FORMAT_R8G8B8A8_UNORM}) {
+  const bool srgbFirst = preferSrgbTarget(device, samples);
+  for (VkFormat format : {srgbFirst ? VK_FORMAT_B8G8R8A8_SRGB : VK_FORMAT_B8G8R8A8_UNORM,
+                          srgbFirst ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                          srgbFirst ? VK_FORMAT_B8G8R8A8_UNORM : VK_FORMAT_B8G8R8A8_SRGB,
+                          srgbFirst ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R8G8B8A8_SRGB}) {
     VkFormatProperties props;
     vkGetPhysicalDeviceFormatProperties(device.physicalDevice, format, &props);
     if ((props.optimalTilingFeatures & kNeeded) == kNeeded) return format;
@@ -50,7 +53,7 @@ Result<std::unique_ptr<Renderer>> Renderer::createHeadless(const Device& device,
     return makeError(ErrorCode::kInvalidArgument, "headless image size must be at least 1x1");
   }
   std::unique_ptr<Renderer> r(new Renderer(device, options));
-  auto color = chooseOffscreenFormat(device);
+  auto color = chooseOffscreenFormat(device, chooseSampleCount(device, r->options_.msaaSamples));
   CETVIEW_TRY(color);
   r->format_.color = *color;
   r->format_.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
@@ -71,7 +74,7 @@ Result<std::unique_ptr<Renderer>> Renderer::createWindowed(const Device& device,
   std::unique_ptr<Renderer> r(new Renderer(device, options));
   r->surface_ = surface;
   r->framebufferSize_ = std::move(framebufferSize);
-  auto format = chooseSurfaceFormat(device, surface);
+  auto format = chooseSurfaceFormat(device, surface, chooseSampleCount(device, r->options_.msaaSamples));
   CETVIEW_TRY(format);
   r->swapchain_.format = *format;
   r->format_.color = format->format;
@@ -243,7 +246,7 @@ Status Renderer::recreateSwapchain(VkExtent2D framebuffer, bool* minimised) {
     *minimised = true;
     return {};
   }
-  auto format = chooseSurfaceFormat(device_, surface_);
+  auto format = chooseSurfaceFormat(device_, surface_, format_.samples);
   CETVIEW_TRY(format);
   auto fresh = createSwapchain(device_, surface_, *format, *extent, options_.vsync, swapchain_.swapchain);
   CETVIEW_TRY(fresh);
