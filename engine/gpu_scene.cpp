@@ -293,7 +293,14 @@ Status GpuScene::uploadFaces() {
     }
     committedIndices_ = committedIndices_ - before.count + n;
     // The culling bounds of what is drawn from now on (one-by-one draws only; see the top of gpu_scene.h).
-    if (!indirect_) slot.bounds = computeFaceCullBounds(scene_.vertices_.data(), face.pending.data(), n);
+    if (!indirect_) {
+      slot.clusters.clear();
+      for (std::uint64_t first = 0; first < n; first += 3 * kClusterTriangles) {
+        slot.clusters.push_back(
+            computeFaceCullBounds(scene_.vertices_.data(), face.pending.data() + first,
+                                  std::min<std::uint64_t>(n - first, 3 * kClusterTriangles)));
+      }
+    }
     if (face.part < partDraws_.size()) partDraws_[face.part].facesDirty = true;
     slot.uploading = false;
     face.queued = false;
@@ -476,8 +483,9 @@ void GpuScene::buildFaceDraws(std::uint32_t part, PartDraws& draws) {
     const FaceSlot& slot = faces_[f];
     const Scene::Face& face = scene_.faces_[f];
     if (slot.count == 0 || !face.visible) continue;
-    list.push_back(FaceDraw{static_cast<std::uint32_t>(slot.offset), static_cast<std::uint32_t>(slot.count),
-                            packColor(face.color), linearColor(face.color), slot.bounds});
+    list.push_back(FaceDraw{f, static_cast<std::uint32_t>(slot.offset),
+                            static_cast<std::uint32_t>(slot.count), packColor(face.color),
+                            linearColor(face.color)});
   }
   std::sort(list.begin(), list.end(),
             [](const FaceDraw& a, const FaceDraw& b) { return a.firstIndex < b.firstIndex; });
@@ -512,7 +520,7 @@ void GpuScene::buildEdgeRuns(std::uint32_t part, PartDraws& draws) {
 void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
                                VkPipeline twoSided, VkPipeline culled) {
   faceDrawCalls_ = 0;
-  facesCulled_ = 0;
+  clustersCulled_ = 0;
   edgeDrawCalls_ = 0;  // until recordEdgeDraws() (not called without edges)
   if (committedIndices_ == 0) return;
   VkDeviceSize zero = 0;
@@ -572,19 +580,24 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       runCount = 0;
     };
     for (const FaceDraw& face : draws.faces) {
-      if (outsideFrustum(cullView, face.bounds) || (backFaces && backFacing(cullView, face.bounds))) {
-        ++facesCulled_;
-        continue;
+      const std::vector<FaceCullBounds>& clusters = faces_[face.face].clusters;
+      for (std::size_t k = 0; k < clusters.size(); ++k) {
+        if (outsideFrustum(cullView, clusters[k]) || (backFaces && backFacing(cullView, clusters[k]))) {
+          ++clustersCulled_;
+          continue;
+        }
+        const std::uint32_t first = face.firstIndex + static_cast<std::uint32_t>(k) * 3 * kClusterTriangles;
+        const std::uint32_t count =
+            std::min(face.indexCount - (first - face.firstIndex), 3 * kClusterTriangles);
+        if (runCount > 0 && runFirst + runCount == first && (!ownColors || runFace->packed == face.packed)) {
+          runCount += count;
+          continue;
+        }
+        flush();
+        runFirst = first;
+        runCount = count;
+        runFace = &face;
       }
-      if (runCount > 0 && runFirst + runCount == face.firstIndex &&
-          (!ownColors || runFace->packed == face.packed)) {
-        runCount += face.indexCount;
-        continue;
-      }
-      flush();
-      runFirst = face.firstIndex;
-      runCount = face.indexCount;
-      runFace = &face;
     }
     flush();
   }

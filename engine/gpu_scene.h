@@ -14,10 +14,11 @@
 // per draw: at 1M triangles the 1200 edge and 800 face draws of the benchmark were a fifth of it).
 // So each part's edges whose slots follow each other in the edge buffer are drawn as one
 // line list, and its faces as one draw per run of adjacent slots of one colour (the colour goes in
-// the push constants, so no per-face colour reaches the shaders). Faces outside the view frustum,
-// and faces of culled closed solids that wholly face away from the eye, are left out as each frame
-// is recorded (face_culling.h). Each part's faces in slot order are kept, rebuilt only when a slot,
-// a face colour or a visibility changed.
+// the push constants, so no per-face colour reaches the shaders). Clusters of kClusterTriangles
+// consecutive triangles of a face that lie outside the view frustum, or wholly face away from the
+// eye on a culled closed solid, are left out as each frame is recorded (face_culling.h): about a
+// quarter of a curved closed model's triangles then never reach lavapipe's front end. Each part's faces in
+// slot order are kept, rebuilt only when a slot, a face colour or a visibility changed.
 //
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
@@ -44,6 +45,10 @@
 #include "engine/upload_ring.h"
 
 namespace cetview::engine {
+
+// Triangles per culling cluster of a face (one-by-one draws): small enough for the clusters of a
+// curved surface to face one way, large enough that the extra draw calls cost less than they save.
+inline constexpr std::uint32_t kClusterTriangles = 128;
 
 struct GpuSceneOptions {
   std::uint64_t initialVertexCapacity = 1u << 16;     // vertices (buffers double when full)
@@ -94,8 +99,8 @@ class GpuScene {
   // Draw calls the last recordFaceDraws() / recordEdgeDraws() issued (indirect: one per call).
   std::uint32_t lastFaceDrawCalls() const { return faceDrawCalls_; }
   std::uint32_t lastEdgeDrawCalls() const { return edgeDrawCalls_; }
-  // Face draws (per instance) the last recordFaceDraws() left out as invisible (face_culling.h).
-  std::uint32_t lastFacesCulled() const { return facesCulled_; }
+  // Clusters of faces (per instance) the last recordFaceDraws() left out as invisible.
+  std::uint32_t lastClustersCulled() const { return clustersCulled_; }
   std::uint64_t committedTriangles() const { return committedIndices_ / 3; }  // per instance of each part
   std::uint32_t uploadedVertices() const { return scene_.uploadedVertices_; }
 
@@ -125,7 +130,9 @@ class GpuScene {
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
     std::uint64_t drawWrittenFrame = 0;  // frame whose copies already hold its draw
     std::uint64_t drawRingOffset = 0;
-    FaceCullBounds bounds;  // of the committed triangles (only without indirect draws)
+    // Culling bounds of the committed triangles in clusters of kClusterTriangles, in their order
+    // (only without indirect draws).
+    std::vector<FaceCullBounds> clusters;
   };
   struct EdgeSlot {
     std::uint64_t offset = 0, capacity = 0, count = 0;
@@ -138,10 +145,10 @@ class GpuScene {
   // Without indirect draws (see the top of this file): a part's drawable faces in slot order, merged
   // into runs as each frame is recorded, and its edges merged once.
   struct FaceDraw {
+    std::uint32_t face = 0;
     std::uint32_t firstIndex = 0, indexCount = 0;
     std::uint32_t packed = 0;  // packColor() of the face's colour
     glm::vec4 color{0.0f};     // the same, linear
-    FaceCullBounds bounds;
   };
   struct EdgeRun {
     std::uint32_t firstPoint = 0, pointCount = 0;
@@ -197,7 +204,7 @@ class GpuScene {
   std::vector<EdgeSlot> edges_;
   std::uint64_t committedIndices_ = 0;
   std::vector<PartDraws> partDraws_;
-  std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0, facesCulled_ = 0;
+  std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0, clustersCulled_ = 0;
 
   // Per-frame recording state.
   UploadRing* ring_ = nullptr;

@@ -136,9 +136,10 @@ class Renderer {
   // adjacent slots, see gpu_scene.h; indirect: one per multi-draw call).
   std::uint32_t lastFaceDrawCalls() const { return gpuScene_->lastFaceDrawCalls(); }
   std::uint32_t lastEdgeDrawCalls() const { return gpuScene_->lastEdgeDrawCalls(); }
-  // Faces (per instance) the last rendered frame did not draw: outside the view, or wholly back-
-  // facing on a culled closed solid (one-by-one draws only; see engine/face_culling.h).
-  std::uint32_t lastFacesCulled() const { return gpuScene_->lastFacesCulled(); }
+  // Clusters of up to kClusterTriangles triangles of a face (per instance) the last rendered frame
+  // did not draw: outside the view, or wholly back-facing on a culled closed solid (one-by-one
+  // draws only; see gpu_scene.h and face_culling.h). A face of fewer triangles is one cluster.
+  std::uint32_t lastClustersCulled() const { return gpuScene_->lastClustersCulled(); }
   const Device& device() const { return device_; }
 
   // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.

@@ -68,7 +68,8 @@ class Scene {
 
   // Face `face`'s triangles are now `indices` (count a multiple of 3, each < vertexCount()),
   // replacing the previous array (any length; 0 empties the face). Copies the indices; a face of
-  // 256 triangles or more has its triangles reordered for vertex reuse (each keeps its winding).
+  // 256 triangles or more whose order reuses vertices poorly has its triangles reordered
+  // (triangle_order.h; each keeps its winding).
   // Errors: kInvalidArgument (unknown face, count not a multiple of 3, index out of range).
   Status setFaceIndices(FaceId face, const std::uint32_t* indices, std::size_t count);
 

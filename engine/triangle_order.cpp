@@ -10,6 +10,8 @@ namespace cetview::engine {
 void reorderForVertexReuse(std::vector<std::uint32_t>& indices) {
   const std::size_t count = indices.size() / 3 * 3;
   if (count / 3 < kReorderMinTriangles) return;
+  if (double(lavapipeVertexFetches(indices.data(), count)) <= kCompactFetchesPerTriangle * double(count / 3))
+    return;
   auto [lo, hi] = std::minmax_element(indices.begin(), indices.begin() + static_cast<std::ptrdiff_t>(count));
   const std::uint32_t base = *lo;
   const std::size_t range = std::size_t{*hi} - base + 1;
