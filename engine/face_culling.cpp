@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -22,38 +23,40 @@ FaceCullBounds computeFaceCullBounds(const MeshVertex* vertices, const std::uint
                                      std::size_t count) {
   FaceCullBounds result;
   if (count < 3) return result;
+  // One pass for the box and the triangles' unit normals, one over the normals for the cone. The
+  // axis is the mean direction of the normals (each counted once, whatever its area, so that many
+  // small triangles of a curved region cannot be outvoted by one large one). Run once per cluster
+  // as its triangles are committed, so it is kept cheap (~10 ns a triangle).
+  const std::size_t triangles = count / 3;
+  thread_local std::vector<glm::vec3> normals;
+  normals.resize(triangles);
   Bounds box;
-  for (std::size_t i = 0; i < count; ++i) box.add(position(vertices[indices[i]]));
+  glm::vec3 sum(0.0f);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    glm::vec3 a = position(vertices[indices[3 * t]]);
+    glm::vec3 b = position(vertices[indices[3 * t + 1]]);
+    glm::vec3 c = position(vertices[indices[3 * t + 2]]);
+    box.add(a);
+    box.add(b);
+    box.add(c);
+    glm::vec3 n = glm::cross(b - a, c - a);
+    float length = glm::length(n);
+    // A triangle without area draws nothing: it bounds no direction.
+    normals[t] = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f);
+    sum += normals[t];
+  }
   result.center = box.center();
   result.radius = 0.5f * glm::length(box.size());
-
-  // The cone's axis: the mean direction of the triangles' normals (each counted once, whatever its
-  // area, so that many small triangles of a curved region cannot be outvoted by one large one).
-  glm::dvec3 sum(0.0);
-  std::size_t triangles = count / 3;
-  for (std::size_t t = 0; t < triangles; ++t) {
-    glm::dvec3 a(position(vertices[indices[3 * t]]));
-    glm::dvec3 b(position(vertices[indices[3 * t + 1]]));
-    glm::dvec3 c(position(vertices[indices[3 * t + 2]]));
-    glm::dvec3 n = glm::cross(b - a, c - a);
-    double length = glm::length(n);
-    if (length > 0.0 && std::isfinite(length)) sum += n / length;
+  float sumLength = glm::length(sum);
+  if (!(sumLength > 0.0f) || !std::isfinite(sumLength)) return result;  // no triangle with an area
+  glm::vec3 axis = sum / sumLength;
+  float minCos = 1.0f;
+  for (const glm::vec3& n : normals) {
+    if (n != glm::vec3(0.0f)) minCos = std::min(minCos, glm::dot(axis, n));
   }
-  double sumLength = glm::length(sum);
-  if (!(sumLength > 0.0) || !std::isfinite(sumLength)) return result;  // no triangle with an area
-  glm::dvec3 axis = sum / sumLength;
-  double minCos = 1.0;
-  for (std::size_t t = 0; t < triangles && minCos > 0.0; ++t) {
-    glm::dvec3 a(position(vertices[indices[3 * t]]));
-    glm::dvec3 b(position(vertices[indices[3 * t + 1]]));
-    glm::dvec3 c(position(vertices[indices[3 * t + 2]]));
-    glm::dvec3 n = glm::cross(b - a, c - a);
-    double length = glm::length(n);
-    if (length > 0.0 && std::isfinite(length)) minCos = std::min(minCos, glm::dot(axis, n) / length);
-  }
-  double angle = std::acos(std::clamp(minCos, -1.0, 1.0)) + kConeMargin;
+  double angle = std::acos(std::clamp(double(minCos), -1.0, 1.0)) + kConeMargin;
   if (angle >= 0.5 * 3.14159265358979) return result;  // normals spread over a half space or more
-  result.axis = glm::vec3(axis);
+  result.axis = axis;
   result.cosAngle = static_cast<float>(std::cos(angle));
   return result;
 }
