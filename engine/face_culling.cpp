@@ -23,39 +23,41 @@ FaceCullBounds computeFaceCullBounds(const MeshVertex* vertices, const std::uint
                                      std::size_t count) {
   FaceCullBounds result;
   if (count < 3) return result;
-  // One pass for the box and the triangles' unit normals, one over the normals for the cone. The
-  // axis is the mean direction of the normals (each counted once, whatever its area, so that many
-  // small triangles of a curved region cannot be outvoted by one large one). Run once per cluster
-  // as its triangles are committed, so it is kept cheap (~10 ns a triangle).
+  // One pass for the box and the triangles' normals (area-weighted: their sum is the axis), one
+  // over the normals for the widest angle to the axis, without a square root per triangle. Run
+  // once per cluster as its triangles are committed, inside an upload frame: kept cheap.
   const std::size_t triangles = count / 3;
   thread_local std::vector<glm::vec3> normals;
   normals.resize(triangles);
-  Bounds box;
+  glm::vec3 lo(vertices[indices[0]].position[0], vertices[indices[0]].position[1],
+               vertices[indices[0]].position[2]);
+  glm::vec3 hi = lo;
   glm::vec3 sum(0.0f);
   for (std::size_t t = 0; t < triangles; ++t) {
     glm::vec3 a = position(vertices[indices[3 * t]]);
     glm::vec3 b = position(vertices[indices[3 * t + 1]]);
     glm::vec3 c = position(vertices[indices[3 * t + 2]]);
-    box.add(a);
-    box.add(b);
-    box.add(c);
-    glm::vec3 n = glm::cross(b - a, c - a);
-    float length = glm::length(n);
-    // A triangle without area draws nothing: it bounds no direction.
-    normals[t] = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f);
+    lo = glm::min(lo, glm::min(a, glm::min(b, c)));
+    hi = glm::max(hi, glm::max(a, glm::max(b, c)));
+    normals[t] = glm::cross(b - a, c - a);
     sum += normals[t];
   }
-  result.center = box.center();
-  result.radius = 0.5f * glm::length(box.size());
+  result.center = 0.5f * (lo + hi);
+  result.radius = 0.5f * glm::length(hi - lo);
   float sumLength = glm::length(sum);
-  if (!(sumLength > 0.0f) || !std::isfinite(sumLength)) return result;  // no triangle with an area
-  glm::vec3 axis = sum / sumLength;
-  float minCos = 1.0f;
+  if (!(sumLength > 0.0f) || !std::isfinite(sumLength)) return result;  // no area, or not finite
+  const glm::vec3 axis = sum / sumLength;
+  // The smallest cos(angle to the axis) as a signed square, cos * |cos| = d * |d| / |n|^2.
+  float minSignedCos2 = 1.0f;
   for (const glm::vec3& n : normals) {
-    if (n != glm::vec3(0.0f)) minCos = std::min(minCos, glm::dot(axis, n));
+    float length2 = glm::dot(n, n);
+    if (!(length2 > 0.0f)) continue;  // a triangle without area draws nothing
+    float d = glm::dot(axis, n);
+    minSignedCos2 = std::min(minSignedCos2, d * std::abs(d) / length2);
   }
-  double angle = std::acos(std::clamp(double(minCos), -1.0, 1.0)) + kConeMargin;
-  if (angle >= 0.5 * 3.14159265358979) return result;  // normals spread over a half space or more
+  if (!(minSignedCos2 > 0.0f)) return result;  // normals spread over a half space or more
+  double angle = std::acos(std::min(1.0, std::sqrt(double(minSignedCos2)))) + kConeMargin;
+  if (angle >= 0.5 * 3.14159265358979) return result;
   result.axis = axis;
   result.cosAngle = static_cast<float>(std::cos(angle));
   return result;

@@ -457,6 +457,20 @@ void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
   fills_.clear();
 }
 
+namespace {
+
+// The sphere around a part's bounds (culling bounds without a cone), or none for an empty part.
+FaceCullBounds sphereAround(const Bounds& bounds) {
+  FaceCullBounds sphere;
+  if (!bounds.empty()) {
+    sphere.center = bounds.center();
+    sphere.radius = 0.5f * glm::length(bounds.size());
+  }
+  return sphere;
+}
+
+}  // namespace
+
 GpuScene::PartDraws& GpuScene::partDraws(std::uint32_t part) {
   if (partDraws_.size() < scene_.parts_.size()) partDraws_.resize(scene_.parts_.size());
   PartDraws& draws = partDraws_[part];
@@ -544,6 +558,9 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       bound = pipeline;
     }
     DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
+    const CullView cullView =
+        makeCullView(constants.modelViewProj, glm::inverse(instance.transform) * view.eye);
+    if (outsideFrustum(cullView, sphereAround(part.bounds))) continue;  // the whole instance is out of view
     if (indirect_) {
       vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
       for (std::uint32_t first = part.firstFace; first < end; first += maxDraws) {
@@ -561,8 +578,6 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
     // Whole faces facing away only where the pipeline culls back faces (not in wireframe).
     const bool backFaces = cull && culled != twoSided;
-    const CullView cullView =
-        makeCullView(constants.modelViewProj, glm::inverse(instance.transform) * view.eye);
     bool colorPushed = false;
     std::uint32_t pushed = 0;
     std::uint32_t runFirst = 0, runCount = 0;
@@ -615,6 +630,7 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
         std::min<std::uint32_t>(part.firstEdge + part.edgeCount, static_cast<std::uint32_t>(edges_.size()));
     if (part.firstEdge >= end) continue;
     DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
+    if (outsideFrustum(makeCullView(constants.modelViewProj, view.eye), sphereAround(part.bounds))) continue;
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);
     if (indirect_) {

@@ -17,8 +17,9 @@
 // the push constants, so no per-face colour reaches the shaders). Clusters of kClusterTriangles
 // consecutive triangles of a face that lie outside the view frustum, or wholly face away from the
 // eye on a culled closed solid, are left out as each frame is recorded (face_culling.h): about a
-// quarter of a curved closed model's triangles then never reach lavapipe's front end. Each part's faces in
-// slot order are kept, rebuilt only when a slot, a face colour or a visibility changed.
+// quarter of a curved closed model's triangles then never reach lavapipe's front end. On every
+// device, instances whose part's bounding sphere lies outside the view frustum are not drawn. Each part's
+// faces in slot order are kept, rebuilt only when a slot, a face colour or a visibility changed.
 //
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the

@@ -375,6 +375,30 @@ TEST_F(UpdateTest, FacesOutOfViewOrFacingAwayAreLeftOutWithoutChangingThePicture
   }
 }
 
+TEST_F(UpdateTest, InstancesOutOfViewAreNotDrawn) {
+  Renderer* r = load(sphere(1.0f, 16));
+  ASSERT_NE(r, nullptr);
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage one = shot(*r, camera);
+  const std::uint32_t faceDraws = r->lastFaceDrawCalls(), edgeDraws = r->lastEdgeDrawCalls();
+  // A second instance far behind the camera: nothing of it is drawn, and the picture is the same.
+  glm::mat4 away(1.0f);
+  away[3] = glm::vec4(camera.eye() - 50.0f * camera.direction, 1.0f);
+  ASSERT_TRUE(scene.addInstance(PartId{0}, away).ok());
+  EXPECT_EQ(compareImages(one, shot(*r, camera), 0).differing, 0u);
+  EXPECT_EQ(r->lastFaceDrawCalls(), faceDraws);
+  EXPECT_EQ(r->lastEdgeDrawCalls(), edgeDraws);
+  // Moved into view, it is.
+  glm::mat4 near(1.0f);
+  near[3] = glm::vec4(0.5f, 0.0f, 0.0f, 1.0f);
+  ASSERT_TRUE(scene.setInstanceTransform(InstanceId{1}, near).ok());
+  (void)shot(*r, camera);
+  EXPECT_GT(r->lastFaceDrawCalls(), faceDraws);
+  EXPECT_EQ(r->lastEdgeDrawCalls(), 2 * edgeDraws);
+}
+
 TEST_F(UpdateTest, OverlayDrawsInsideTheRenderPassOfRenderedFrames) {
   Renderer* r = load(cube());
   ASSERT_NE(r, nullptr);
