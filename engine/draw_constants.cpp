@@ -14,6 +14,8 @@ FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& sty
   glm::mat4 view = viewMatrix(camera);
   v.viewProj = projectionMatrix(camera, aspect) * view;
   v.towardsEye = -glm::normalize(camera.direction);
+  v.eye = camera.projection == Projection::kPerspective ? glm::vec4(camera.eye(), 1.0f)
+                                                        : glm::vec4(v.towardsEye, 0.0f);
   // View space -> world for directions: the transpose of the view matrix's rotation.
   glm::mat3 toWorld = glm::transpose(glm::mat3(view));
   v.keyLight = glm::normalize(toWorld * keyLightInView());

@@ -17,10 +17,11 @@ namespace cetview::engine {
 // World-space view of one frame, computed once and shared by every draw.
 struct FrameView {
   glm::mat4 viewProj{1.0f};
-  glm::vec3 towardsEye{0.0f};            // unit, opposite the view direction
-  glm::vec3 keyLight{0.0f};              // unit direction towards the key light (fixed to the camera)
-  glm::vec3 up{0.0f};                    // unit screen-up
-  std::optional<glm::vec4> forcedColor;  // linear; set when file colours are off
+  glm::vec3 towardsEye{0.0f};             // unit, opposite the view direction
+  glm::vec3 keyLight{0.0f};               // unit direction towards the key light (fixed to the camera)
+  glm::vec3 up{0.0f};                     // unit screen-up
+  glm::vec4 eye{0.0f, 0.0f, 0.0f, 1.0f};  // perspective: (eye, 1); orthographic: (towardsEye, 0)
+  std::optional<glm::vec4> forcedColor;   // linear; set when file colours are off
 };
 
 // The key light, in view space: from the upper left, in front of the model.

@@ -1,6 +1,7 @@
 #include "engine/gpu_scene.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 
 #include <glm/matrix.hpp>
@@ -71,6 +72,7 @@ void GpuScene::reset() {
   edgeSlots_ = RangeAllocator(edgeSlots_.capacity());
   faces_.clear();
   edges_.clear();
+  partDraws_.clear();
   committedIndices_ = 0;
   generation_ = scene_.generation_;
 }
@@ -290,6 +292,16 @@ Status GpuScene::uploadFaces() {
       slot.offset = slot.capacity = 0;
     }
     committedIndices_ = committedIndices_ - before.count + n;
+    // The culling bounds of what is drawn from now on (one-by-one draws only; see the top of gpu_scene.h).
+    if (!indirect_) {
+      slot.clusters.clear();
+      for (std::uint64_t first = 0; first < n; first += 3 * kClusterTriangles) {
+        slot.clusters.push_back(
+            computeFaceCullBounds(scene_.vertices_.data(), face.pending.data() + first,
+                                  std::min<std::uint64_t>(n - first, 3 * kClusterTriangles)));
+      }
+    }
+    if (face.part < partDraws_.size()) partDraws_[face.part].facesDirty = true;
     slot.uploading = false;
     face.queued = false;
     scene_.pendingIndexBytes_ -= n * kIndexSize;
@@ -364,6 +376,7 @@ Status GpuScene::uploadEdges() {
       edgeSlots_.free(slot.offset, slot.capacity);
       slot.offset = slot.capacity = 0;
     }
+    if (edge.part < partDraws_.size()) partDraws_[edge.part].edgesDirty = true;
     slot.uploading = false;
     edge.queued = false;
     scene_.pendingEdgeBytes_ -= edge.pending.size() * sizeof(float);
@@ -444,13 +457,91 @@ void GpuScene::emit(VkCommandBuffer cmd, std::vector<Buffer>& retired) {
   fills_.clear();
 }
 
+namespace {
+
+// The sphere around a part's bounds (culling bounds without a cone), or none for an empty part.
+FaceCullBounds sphereAround(const Bounds& bounds) {
+  FaceCullBounds sphere;
+  if (!bounds.empty()) {
+    sphere.center = bounds.center();
+    sphere.radius = 0.5f * glm::length(bounds.size());
+  }
+  return sphere;
+}
+
+}  // namespace
+
+GpuScene::PartDraws& GpuScene::partDraws(std::uint32_t part) {
+  if (partDraws_.size() < scene_.parts_.size()) partDraws_.resize(scene_.parts_.size());
+  PartDraws& draws = partDraws_[part];
+  if (draws.facesDirty || draws.sceneVersion != scene_.parts_[part].drawVersion) {
+    buildFaceDraws(part, draws);
+    draws.facesDirty = false;
+    draws.sceneVersion = scene_.parts_[part].drawVersion;
+  }
+  if (draws.edgesDirty) {
+    buildEdgeRuns(part, draws);
+    draws.edgesDirty = false;
+  }
+  return draws;
+}
+
+void GpuScene::buildFaceDraws(std::uint32_t part, PartDraws& draws) {
+  const Scene::Part& p = scene_.parts_[part];
+  // Only faces this GpuScene already knows (tables grow at the start of each upload).
+  std::uint32_t end =
+      std::min<std::uint32_t>(p.firstFace + p.faceCount, static_cast<std::uint32_t>(faces_.size()));
+  std::vector<FaceDraw>& list = draws.faces;
+  list.clear();
+  for (std::uint32_t f = p.firstFace; f < end; ++f) {
+    const FaceSlot& slot = faces_[f];
+    const Scene::Face& face = scene_.faces_[f];
+    if (slot.count == 0 || !face.visible) continue;
+    list.push_back(FaceDraw{f, static_cast<std::uint32_t>(slot.offset),
+                            static_cast<std::uint32_t>(slot.count), packColor(face.color),
+                            linearColor(face.color)});
+  }
+  std::sort(list.begin(), list.end(),
+            [](const FaceDraw& a, const FaceDraw& b) { return a.firstIndex < b.firstIndex; });
+}
+
+void GpuScene::buildEdgeRuns(std::uint32_t part, PartDraws& draws) {
+  const Scene::Part& p = scene_.parts_[part];
+  std::uint32_t end =
+      std::min<std::uint32_t>(p.firstEdge + p.edgeCount, static_cast<std::uint32_t>(edges_.size()));
+  std::vector<EdgeRun>& runs = draws.edges;
+  runs.clear();
+  for (std::uint32_t e = p.firstEdge; e < end; ++e) {
+    const EdgeSlot& slot = edges_[e];
+    if (slot.count > 0) {
+      runs.push_back(
+          EdgeRun{static_cast<std::uint32_t>(slot.offset), static_cast<std::uint32_t>(slot.count)});
+    }
+  }
+  std::sort(runs.begin(), runs.end(),
+            [](const EdgeRun& a, const EdgeRun& b) { return a.firstPoint < b.firstPoint; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (out > 0 && runs[out - 1].firstPoint + runs[out - 1].pointCount == runs[i].firstPoint) {
+      runs[out - 1].pointCount += runs[i].pointCount;
+    } else {
+      runs[out++] = runs[i];
+    }
+  }
+  runs.resize(out);
+}
+
 void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
-                               VkPipeline twoSided, VkPipeline culled) const {
+                               VkPipeline twoSided, VkPipeline culled) {
+  faceDrawCalls_ = 0;
+  clustersCulled_ = 0;
+  edgeDrawCalls_ = 0;  // until recordEdgeDraws() (not called without edges)
   if (committedIndices_ == 0) return;
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kVertices].buffer.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, buffers_[kIndices].buffer.buffer, 0, VK_INDEX_TYPE_UINT32);
   std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
+  constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   VkPipeline bound = VK_NULL_HANDLE;
   for (const Scene::Instance& instance : scene_.instances_) {
     if (!instance.visible) continue;
@@ -467,26 +558,68 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       bound = pipeline;
     }
     DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(constants), &constants);
+    const CullView cullView =
+        makeCullView(constants.modelViewProj, glm::inverse(instance.transform) * view.eye);
+    if (outsideFrustum(cullView, sphereAround(part.bounds))) continue;  // the whole instance is out of view
     if (indirect_) {
+      vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
       for (std::uint32_t first = part.firstFace; first < end; first += maxDraws) {
         std::uint32_t count = std::min(end - first, maxDraws);
         vkCmdDrawIndexedIndirect(cmd, buffers_[kFaceDraws].buffer.buffer, first * kFaceDrawSize, count,
                                  static_cast<std::uint32_t>(kFaceDrawSize));
+        ++faceDrawCalls_;
       }
-    } else {
-      for (std::uint32_t f = part.firstFace; f < end; ++f) {
-        const FaceSlot& slot = faces_[f];
-        if (slot.count == 0 || !scene_.faces_[f].visible) continue;
-        vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(slot.count), 1,
-                         static_cast<std::uint32_t>(slot.offset), 0, f);
+      continue;
+    }
+    // One by one: runs of adjacent slots (of one colour unless the instance has its own), leaving
+    // out the faces that cannot show.
+    const PartDraws& draws = partDraws(instance.part);
+    const bool ownColors = constants.color.a < 0.0f;
+    vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
+    // Whole faces facing away only where the pipeline culls back faces (not in wireframe).
+    const bool backFaces = cull && culled != twoSided;
+    bool colorPushed = false;
+    std::uint32_t pushed = 0;
+    std::uint32_t runFirst = 0, runCount = 0;
+    const FaceDraw* runFace = nullptr;  // the run's first face (its colour)
+    auto flush = [&] {
+      if (runCount == 0) return;
+      if (ownColors && (!colorPushed || runFace->packed != pushed)) {
+        vkCmdPushConstants(cmd, layout, kStages, offsetof(DrawConstants, color), sizeof(runFace->color),
+                           &runFace->color);
+        colorPushed = true;
+        pushed = runFace->packed;
+      }
+      vkCmdDrawIndexed(cmd, runCount, 1, runFirst, 0, 0);
+      ++faceDrawCalls_;
+      runCount = 0;
+    };
+    for (const FaceDraw& face : draws.faces) {
+      const std::vector<FaceCullBounds>& clusters = faces_[face.face].clusters;
+      for (std::size_t k = 0; k < clusters.size(); ++k) {
+        if (outsideFrustum(cullView, clusters[k]) || (backFaces && backFacing(cullView, clusters[k]))) {
+          ++clustersCulled_;
+          continue;
+        }
+        const std::uint32_t first = face.firstIndex + static_cast<std::uint32_t>(k) * 3 * kClusterTriangles;
+        const std::uint32_t count =
+            std::min(face.indexCount - (first - face.firstIndex), 3 * kClusterTriangles);
+        if (runCount > 0 && runFirst + runCount == first && (!ownColors || runFace->packed == face.packed)) {
+          runCount += count;
+          continue;
+        }
+        flush();
+        runFirst = first;
+        runCount = count;
+        runFace = &face;
       }
     }
+    flush();
   }
 }
 
-void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const {
+void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) {
+  edgeDrawCalls_ = 0;
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kEdgePoints].buffer.buffer, &zero);
   std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
@@ -497,6 +630,7 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
         std::min<std::uint32_t>(part.firstEdge + part.edgeCount, static_cast<std::uint32_t>(edges_.size()));
     if (part.firstEdge >= end) continue;
     DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
+    if (outsideFrustum(makeCullView(constants.modelViewProj, view.eye), sphereAround(part.bounds))) continue;
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);
     if (indirect_) {
@@ -504,12 +638,12 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
         std::uint32_t count = std::min(end - first, maxDraws);
         vkCmdDrawIndirect(cmd, buffers_[kEdgeDraws].buffer.buffer, first * kEdgeDrawSize, count,
                           static_cast<std::uint32_t>(kEdgeDrawSize));
+        ++edgeDrawCalls_;
       }
     } else {
-      for (std::uint32_t e = part.firstEdge; e < end; ++e) {
-        const EdgeSlot& slot = edges_[e];
-        if (slot.count == 0) continue;
-        vkCmdDraw(cmd, static_cast<std::uint32_t>(slot.count), 1, static_cast<std::uint32_t>(slot.offset), e);
+      for (const EdgeRun& run : partDraws(instance.part).edges) {
+        vkCmdDraw(cmd, run.pointCount, 1, run.firstPoint, 0);
+        ++edgeDrawCalls_;
       }
     }
   }

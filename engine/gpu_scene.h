@@ -9,6 +9,18 @@
 //   edgeDraws   VkDrawIndirectCommand per edge
 // Instances are not uploaded: each draw's push constants carry its transform (draw_constants.h).
 //
+// Without multi-draw indirect (lavapipe), draws are issued one by one, and there each costs about
+// 5-10 us of the single-threaded front end (llvmpipe flushes and copies its 33 KB fragment state
+// per draw: at 1M triangles the 1200 edge and 800 face draws of the benchmark were a fifth of it).
+// So each part's edges whose slots follow each other in the edge buffer are drawn as one
+// line list, and its faces as one draw per run of adjacent slots of one colour (the colour goes in
+// the push constants, so no per-face colour reaches the shaders). Clusters of kClusterTriangles
+// consecutive triangles of a face that lie outside the view frustum, or wholly face away from the
+// eye on a culled closed solid, are left out as each frame is recorded (face_culling.h): about a
+// quarter of a curved closed model's triangles then never reach lavapipe's front end. On every
+// device, instances whose part's bounding sphere lies outside the view frustum are not drawn. Each part's
+// faces in slot order are kept, rebuilt only when a slot, a face colour or a visibility changed.
+//
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
 // face's draw command switches to it in the frame whose copies complete it. The draw command is
@@ -23,9 +35,11 @@
 #include <vector>
 
 #include <vulkan/vulkan.h>
+#include <glm/vec4.hpp>
 
 #include "engine/context.h"
 #include "engine/draw_constants.h"
+#include "engine/face_culling.h"
 #include "engine/range_allocator.h"
 #include "engine/resources.h"
 #include "engine/scene.h"
@@ -33,11 +47,15 @@
 
 namespace cetview::engine {
 
+// Triangles per culling cluster of a face (one-by-one draws): small enough for the clusters of a
+// curved surface to face one way, large enough that the extra draw calls cost less than they save.
+inline constexpr std::uint32_t kClusterTriangles = 128;
+
 struct GpuSceneOptions {
   std::uint64_t initialVertexCapacity = 1u << 16;     // vertices (buffers double when full)
   std::uint64_t initialIndexCapacity = 1u << 18;      // uint32 indices
   std::uint64_t initialEdgePointCapacity = 1u << 14;  // edge points
-  bool indirectDraws = true;  // multi-draw indirect where the device allows; false: one call per face
+  bool indirectDraws = true;  // multi-draw indirect where the device allows; false: one by one, per run
   // Also on CPU devices (lavapipe), where it is off by default: there a multi-draw indirect call
   // that starts past the first command runs about 40x slower than the same draws one by one.
   bool indirectDrawsOnCpu = false;
@@ -73,12 +91,17 @@ class GpuScene {
   // instances of closed solids that are not mirrored and `twoSided` for the rest (both mesh.vert
   // pipelines; they may be the same). Binds the pipelines itself.
   void recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view,
-                       VkPipeline twoSided, VkPipeline culled) const;
+                       VkPipeline twoSided, VkPipeline culled);
   // Inside a render pass with the edge pipeline bound: every edge of every visible instance.
-  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) const;
+  void recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view);
 
   VkBuffer faceColorBuffer() const { return buffers_[kFaceColors].buffer.buffer; }
   bool usesIndirectDraws() const { return indirect_; }
+  // Draw calls the last recordFaceDraws() / recordEdgeDraws() issued (indirect: one per call).
+  std::uint32_t lastFaceDrawCalls() const { return faceDrawCalls_; }
+  std::uint32_t lastEdgeDrawCalls() const { return edgeDrawCalls_; }
+  // Clusters of faces (per instance) the last recordFaceDraws() left out as invisible.
+  std::uint32_t lastClustersCulled() const { return clustersCulled_; }
   std::uint64_t committedTriangles() const { return committedIndices_ / 3; }  // per instance of each part
   std::uint32_t uploadedVertices() const { return scene_.uploadedVertices_; }
 
@@ -108,6 +131,9 @@ class GpuScene {
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
     std::uint64_t drawWrittenFrame = 0;  // frame whose copies already hold its draw
     std::uint64_t drawRingOffset = 0;
+    // Culling bounds of the committed triangles in clusters of kClusterTriangles, in their order
+    // (only without indirect draws).
+    std::vector<FaceCullBounds> clusters;
   };
   struct EdgeSlot {
     std::uint64_t offset = 0, capacity = 0, count = 0;
@@ -117,7 +143,28 @@ class GpuScene {
     std::uint64_t newOffset = 0, newCapacity = 0, done = 0;
   };
 
+  // Without indirect draws (see the top of this file): a part's drawable faces in slot order, merged
+  // into runs as each frame is recorded, and its edges merged once.
+  struct FaceDraw {
+    std::uint32_t face = 0;
+    std::uint32_t firstIndex = 0, indexCount = 0;
+    std::uint32_t packed = 0;  // packColor() of the face's colour
+    glm::vec4 color{0.0f};     // the same, linear
+  };
+  struct EdgeRun {
+    std::uint32_t firstPoint = 0, pointCount = 0;
+  };
+  struct PartDraws {
+    bool facesDirty = true, edgesDirty = true;
+    std::uint64_t sceneVersion = ~std::uint64_t{0};  // Scene::Part::drawVersion `faces` matches
+    std::vector<FaceDraw> faces;                     // visible, non-empty, by firstIndex
+    std::vector<EdgeRun> edges;                      // adjacent slots merged, by firstPoint
+  };
+
   GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options);
+  PartDraws& partDraws(std::uint32_t part);
+  void buildFaceDraws(std::uint32_t part, PartDraws& draws);
+  void buildEdgeRuns(std::uint32_t part, PartDraws& draws);
   Status init();
   void reset();
   // Makes buffers_[t] at least `bytes` large, keeping [0, keepBytes) of its content.
@@ -157,6 +204,8 @@ class GpuScene {
   std::vector<FaceSlot> faces_;
   std::vector<EdgeSlot> edges_;
   std::uint64_t committedIndices_ = 0;
+  std::vector<PartDraws> partDraws_;
+  std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0, clustersCulled_ = 0;
 
   // Per-frame recording state.
   UploadRing* ring_ = nullptr;

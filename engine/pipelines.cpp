@@ -106,6 +106,7 @@ struct PipelineDesc {
   bool depthWrite;
   bool depthBias;  // pushes faces back so lines on them win the depth test
   bool cullBack = false;
+  bool colorPushed = false;  // CETVIEW_SPEC_COLOR_PUSHED, for the face shaders
 };
 
 Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, const TargetFormat& format,
@@ -120,11 +121,21 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
     return fragmentModule.error();
   }
 
+  // The same constants for every stage; a shader without one of them ignores it.
+  const std::array<VkBool32, 2> specValues{desc.colorPushed ? VK_TRUE : VK_FALSE,
+                                           isSrgbFormat(format.color) ? VK_FALSE : VK_TRUE};
+  const std::array<VkSpecializationMapEntry, 2> specEntries{
+      VkSpecializationMapEntry{CETVIEW_SPEC_COLOR_PUSHED, 0, sizeof(VkBool32)},
+      VkSpecializationMapEntry{CETVIEW_SPEC_ENCODE_SRGB, sizeof(VkBool32), sizeof(VkBool32)}};
+  VkSpecializationInfo spec{static_cast<std::uint32_t>(specEntries.size()), specEntries.data(),
+                            sizeof(specValues), specValues.data()};
+
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
   stages[0].module = *vertexModule;
   stages[0].pName = "main";
+  stages[0].pSpecializationInfo = &spec;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = *fragmentModule;
@@ -250,12 +261,7 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
                                     kTriangles, VK_POLYGON_MODE_FILL, false, false, false});
   CETVIEW_TRY(background);
   p.background = *background;
-  auto shaded = createPipeline(device, p, format,
-                               {ShaderId::kMeshVert, ShaderId::kMeshFrag, Input::kMesh, kTriangles,
-                                VK_POLYGON_MODE_FILL, true, true, true});
-  CETVIEW_TRY(shaded);
-  p.shaded = *shaded;
-  PipelineDesc culledDesc{ShaderId::kMeshVert,
+  PipelineDesc shadedDesc{ShaderId::kMeshVert,
                           ShaderId::kMeshFrag,
                           Input::kMesh,
                           kTriangles,
@@ -263,14 +269,26 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
                           true,
                           true,
                           true};
+  shadedDesc.colorPushed = p.colorPushed;
+  auto shaded = createPipeline(device, p, format, shadedDesc);
+  CETVIEW_TRY(shaded);
+  p.shaded = *shaded;
+  PipelineDesc culledDesc = shadedDesc;
   culledDesc.cullBack = true;
   auto shadedCulled = createPipeline(device, p, format, culledDesc);
   CETVIEW_TRY(shadedCulled);
   p.shadedCulled = *shadedCulled;
   if (device.features.fillModeNonSolid) {
-    auto wireframe = createPipeline(device, p, format,
-                                    {ShaderId::kMeshVert, ShaderId::kWireFrag, Input::kMesh, kTriangles,
-                                     VK_POLYGON_MODE_LINE, true, true, false});
+    PipelineDesc wireDesc{ShaderId::kMeshVert,
+                          ShaderId::kWireFrag,
+                          Input::kMesh,
+                          kTriangles,
+                          VK_POLYGON_MODE_LINE,
+                          true,
+                          true,
+                          false};
+    wireDesc.colorPushed = p.colorPushed;
+    auto wireframe = createPipeline(device, p, format, wireDesc);
     CETVIEW_TRY(wireframe);
     p.wireframe = *wireframe;
   }
@@ -281,7 +299,6 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
   p.edges = *edges;
   return {};
 }
-
 
 // Destroys the render pass and the pipelines, keeping the layouts.
 void destroyPassAndPipelines(const Device& device, Pipelines& p) {
@@ -295,8 +312,9 @@ void destroyPassAndPipelines(const Device& device, Pipelines& p) {
 
 }  // namespace
 
-Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format) {
+Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format, bool colorPushed) {
   Pipelines p;
+  p.colorPushed = colorPushed;
   Status status = createLayouts(device, p);
   if (status) status = createPassAndPipelines(device, format, p);
   if (!status) {
@@ -334,6 +352,10 @@ VkSampleCountFlagBits chooseSampleCount(const Device& device, std::uint32_t requ
     if (count <= requested && (supported & count)) return static_cast<VkSampleCountFlagBits>(count);
   }
   return VK_SAMPLE_COUNT_1_BIT;
+}
+
+bool preferSrgbTarget(const Device& device, VkSampleCountFlagBits samples) {
+  return device.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU || samples != VK_SAMPLE_COUNT_1_BIT;
 }
 
 bool isSrgbFormat(VkFormat format) {

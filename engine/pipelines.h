@@ -29,10 +29,12 @@ struct Pipelines {
   VkPipeline shadedCulled = VK_NULL_HANDLE;  // back faces culled: closed solids only
   VkPipeline wireframe = VK_NULL_HANDLE;     // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
   VkPipeline edges = VK_NULL_HANDLE;
+  bool colorPushed = false;  // the face pipelines' CETVIEW_SPEC_COLOR_PUSHED
 };
 
-// Errors: kVulkan, kOutOfMemory.
-Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format);
+// `colorPushed`: the face pipelines take the face colour from DrawConstants::color alone (for
+// GpuScene's one-by-one draws, see shaders/common.glsl). Errors: kVulkan, kOutOfMemory.
+Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format, bool colorPushed);
 // For a new target format: a new render pass and pipelines; the descriptor set layout and the
 // pipeline layout stay, so descriptor sets allocated with them stay valid and updatable.
 Status recreatePipelines(const Device& device, const TargetFormat& format, Pipelines& pipelines);
@@ -42,7 +44,13 @@ void destroyPipelines(const Device& device, Pipelines& pipelines);
 Result<VkFormat> chooseDepthFormat(const Device& device);
 // The largest supported count <= `requested` (rounded down to a power of two) for colour and depth.
 VkSampleCountFlagBits chooseSampleCount(const Device& device, std::uint32_t requested);
-// True for *_SRGB formats: the hardware encodes; otherwise shaders must (CETVIEW_FLAG_ENCODE_SRGB).
+// True for *_SRGB formats: the hardware encodes; otherwise shaders must (CETVIEW_SPEC_ENCODE_SRGB).
 bool isSrgbFormat(VkFormat format);
+// Whether targets (window and offscreen) drawn with `samples` should be *_SRGB formats: on GPUs,
+// where encoding is free, and with MSAA, whose resolve must average linear values. Not on CPU
+// devices without MSAA (their default): llvmpipe's sRGB store cost lavapipe about 6% of a
+// 1M-triangle frame, more than the shaders' own encoding into a UNORM target (toTarget() in
+// shaders/common.glsl).
+bool preferSrgbTarget(const Device& device, VkSampleCountFlagBits samples);
 
 }  // namespace cetview::engine

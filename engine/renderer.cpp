@@ -11,13 +11,16 @@
 namespace cetview::engine {
 namespace {
 
-// A colour format for the offscreen image that can be rendered to and copied from: sRGB first, so
-// headless frames match the window's, then UNORM (the shaders encode sRGB themselves).
-Result<VkFormat> chooseOffscreenFormat(const Device& device) {
+// A colour format for the offscreen image that can be rendered to and copied from, in the window's
+// order of preference (preferSrgbTarget()), so headless frames match the window's.
+Result<VkFormat> chooseOffscreenFormat(const Device& device, VkSampleCountFlagBits samples) {
   constexpr VkFormatFeatureFlags kNeeded =
       VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
-  for (VkFormat format : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM,
-                          VK_FORMAT_R8G8B8A8_UNORM}) {
+  const bool srgbFirst = preferSrgbTarget(device, samples);
+  for (VkFormat format : {srgbFirst ? VK_FORMAT_B8G8R8A8_SRGB : VK_FORMAT_B8G8R8A8_UNORM,
+                          srgbFirst ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                          srgbFirst ? VK_FORMAT_B8G8R8A8_UNORM : VK_FORMAT_B8G8R8A8_SRGB,
+                          srgbFirst ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R8G8B8A8_SRGB}) {
     VkFormatProperties props;
     vkGetPhysicalDeviceFormatProperties(device.physicalDevice, format, &props);
     if ((props.optimalTilingFeatures & kNeeded) == kNeeded) return format;
@@ -50,7 +53,7 @@ Result<std::unique_ptr<Renderer>> Renderer::createHeadless(const Device& device,
     return makeError(ErrorCode::kInvalidArgument, "headless image size must be at least 1x1");
   }
   std::unique_ptr<Renderer> r(new Renderer(device, options));
-  auto color = chooseOffscreenFormat(device);
+  auto color = chooseOffscreenFormat(device, chooseSampleCount(device, r->options_.msaaSamples));
   CETVIEW_TRY(color);
   r->format_.color = *color;
   r->format_.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
@@ -71,7 +74,7 @@ Result<std::unique_ptr<Renderer>> Renderer::createWindowed(const Device& device,
   std::unique_ptr<Renderer> r(new Renderer(device, options));
   r->surface_ = surface;
   r->framebufferSize_ = std::move(framebufferSize);
-  auto format = chooseSurfaceFormat(device, surface);
+  auto format = chooseSurfaceFormat(device, surface, chooseSampleCount(device, r->options_.msaaSamples));
   CETVIEW_TRY(format);
   r->swapchain_.format = *format;
   r->format_.color = format->format;
@@ -85,13 +88,13 @@ Status Renderer::createCommon() {
   CETVIEW_TRY(depth);
   format_.depth = *depth;
   format_.samples = chooseSampleCount(device_, options_.msaaSamples);
-  auto pipelines = createPipelines(device_, format_);
-  CETVIEW_TRY(pipelines);
-  pipelines_ = *pipelines;
-
   auto gpuScene = GpuScene::create(device_, scene_, options_.scene);
   CETVIEW_TRY(gpuScene);
   gpuScene_ = std::move(*gpuScene);
+  // One-by-one draws push each run's colour; indirect ones read the face table.
+  auto pipelines = createPipelines(device_, format_, !gpuScene_->usesIndirectDraws());
+  CETVIEW_TRY(pipelines);
+  pipelines_ = *pipelines;
 
   // Every frame in flight holds at most a budget, and the one being recorded another; a block
   // that does not fit before the ring's end skips the rest of the lap, and in that rare case the
@@ -243,7 +246,7 @@ Status Renderer::recreateSwapchain(VkExtent2D framebuffer, bool* minimised) {
     *minimised = true;
     return {};
   }
-  auto format = chooseSurfaceFormat(device_, surface_);
+  auto format = chooseSurfaceFormat(device_, surface_, format_.samples);
   CETVIEW_TRY(format);
   auto fresh = createSwapchain(device_, surface_, *format, *extent, options_.vsync, swapchain_.swapchain);
   CETVIEW_TRY(fresh);
@@ -309,9 +312,6 @@ void Renderer::writeGlobals(Frame& frame, const ViewStyle& style) {
   g.backgroundBottom = linearColor(style.backgroundBottom);
   g.edgeColor = linearColor(style.edgeColor);
   g.lightIntensity = glm::vec4(0.55f, 0.42f, 0.16f, 0.12f);  // headlight, key, sky ambient, specular
-  std::uint32_t flags = 0;
-  if (!isSrgbFormat(format_.color)) flags |= CETVIEW_FLAG_ENCODE_SRGB;
-  g.flags = glm::uvec4(flags, 0u, 0u, 0u);
   std::memcpy(frame.globals.mapped, &g, sizeof(g));
 }
 
@@ -401,7 +401,8 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
   }
   if (capture && present) {
     if (!swapchain_.transferSrc) {
-      return makeError(ErrorCode::kUnsupported, "this window surface's images cannot be copied (no screenshot)");
+      return makeError(ErrorCode::kUnsupported,
+                       "this window surface's images cannot be copied (no screenshot)");
     }
     // Frames in flight never read back (capture waits for its own frame), so the old buffer is free.
     const VkDeviceSize bytes = VkDeviceSize{extent_.width} * extent_.height * 4;
@@ -447,19 +448,20 @@ Result<FrameStatus> Renderer::runFrame(const Camera* camera, const ViewStyle* st
       toCopy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
       toCopy.image = image;
       toCopy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                           0, nullptr, 0, nullptr, 1, &toCopy);
+      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &toCopy);
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageExtent = {extent_.width, extent_.height, 1};
-      vkCmdCopyImageToBuffer(frame.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
+      vkCmdCopyImageToBuffer(frame.cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
+                             &region);
       auto toPresent = toCopy;
       toPresent.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
       toPresent.dstAccessMask = 0;
       toPresent.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
       toPresent.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0,
-                           nullptr, 0, nullptr, 1, &toPresent);
+      vkCmdPipelineBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0,
+                           0, nullptr, 0, nullptr, 1, &toPresent);
       memoryBarrier(frame.cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                     VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     } else if (capture) {

@@ -129,8 +129,17 @@ class Renderer {
   // counts its previous array until the new one is complete).
   std::uint64_t committedTriangles() const { return gpuScene_->committedTriangles(); }
   std::uint32_t swapchainRecreations() const { return recreations_; }
-  // Whether faces are drawn with multi-draw indirect (see GpuSceneOptions) or one call per face.
+  // Whether faces are drawn with multi-draw indirect (see GpuSceneOptions) or one call per run of
+  // faces (gpu_scene.h).
   bool usesIndirectDraws() const { return gpuScene_->usesIndirectDraws(); }
+  // Draw calls the last rendered frame issued for faces and for edges (one by one: one per run of
+  // adjacent slots, see gpu_scene.h; indirect: one per multi-draw call).
+  std::uint32_t lastFaceDrawCalls() const { return gpuScene_->lastFaceDrawCalls(); }
+  std::uint32_t lastEdgeDrawCalls() const { return gpuScene_->lastEdgeDrawCalls(); }
+  // Clusters of up to kClusterTriangles triangles of a face (per instance) the last rendered frame
+  // did not draw: outside the view, or wholly back-facing on a culled closed solid (one-by-one
+  // draws only; see gpu_scene.h and face_culling.h). A face of fewer triangles is one cluster.
+  std::uint32_t lastClustersCulled() const { return gpuScene_->lastClustersCulled(); }
   const Device& device() const { return device_; }
 
   // Images in the swapchain (window; 0 before the first frame), e.g. for ImGui's Vulkan backend.

@@ -4,6 +4,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "engine/triangle_order.h"
+
 namespace cetview::engine {
 namespace {
 
@@ -106,6 +108,7 @@ Status Scene::setFaceIndices(FaceId face, const std::uint32_t* indices, std::siz
 
   if (f.queued) pendingIndexBytes_ -= f.pending.size() * sizeof(std::uint32_t);
   f.pending.assign(indices, indices + count);
+  reorderForVertexReuse(f.pending);
   pendingIndexBytes_ += count * sizeof(std::uint32_t);
   f.requiredVertices = required;
   ++f.serial;
@@ -139,7 +142,9 @@ Status Scene::setEdgePolyline(EdgeId edge, const float* xyz, std::size_t pointCo
 
 Status Scene::setFaceColor(FaceId face, Color8 color) {
   CETVIEW_TRY(checkFace(face));
-  faces_[toIndex(face)].color = color;
+  Face& f = faces_[toIndex(face)];
+  if (f.color != color) ++parts_[f.part].drawVersion;
+  f.color = color;
   faceColorsDirty_.mark(toIndex(face));
   return {};
 }
@@ -149,6 +154,7 @@ Status Scene::setFaceVisible(FaceId face, bool visible) {
   Face& f = faces_[toIndex(face)];
   if (f.visible == visible) return {};
   f.visible = visible;
+  ++parts_[f.part].drawVersion;
   faceDrawsDirty_.mark(toIndex(face));
   return {};
 }

@@ -67,7 +67,9 @@ class Scene {
   std::uint32_t appendVertices(const MeshVertex* vertices, std::size_t count);
 
   // Face `face`'s triangles are now `indices` (count a multiple of 3, each < vertexCount()),
-  // replacing the previous array (any length; 0 empties the face). Copies the indices.
+  // replacing the previous array (any length; 0 empties the face). Copies the indices; a face of
+  // 256 triangles or more whose order reuses vertices poorly has its triangles reordered
+  // (triangle_order.h; each keeps its winding).
   // Errors: kInvalidArgument (unknown face, count not a multiple of 3, index out of range).
   Status setFaceIndices(FaceId face, const std::uint32_t* indices, std::size_t count);
 
@@ -110,6 +112,7 @@ class Scene {
     Color8 color;
     bool closedSolid = false;
     Bounds bounds;
+    std::uint64_t drawVersion = 0;  // bumped when a face's colour or visibility changes
   };
   struct Instance {
     std::uint32_t part = 0;

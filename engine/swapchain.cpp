@@ -2,17 +2,23 @@
 
 #include <algorithm>
 
+#include "engine/pipelines.h"
 #include "engine/vk_check.h"
 
 namespace cetview::engine {
 
-Result<VkSurfaceFormatKHR> chooseSurfaceFormat(const Device& device, VkSurfaceKHR surface) {
+Result<VkSurfaceFormatKHR> chooseSurfaceFormat(const Device& device, VkSurfaceKHR surface,
+                                               VkSampleCountFlagBits samples) {
   std::uint32_t count = 0;
   CETVIEW_VK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physicalDevice, surface, &count, nullptr));
   std::vector<VkSurfaceFormatKHR> formats(count);
   CETVIEW_VK(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physicalDevice, surface, &count, formats.data()));
   if (count == 0) return makeError(ErrorCode::kUnsupported, "the window surface offers no pixel format");
-  for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
+  const bool srgbFirst = preferSrgbTarget(device, samples);
+  for (VkFormat wanted : {srgbFirst ? VK_FORMAT_B8G8R8A8_SRGB : VK_FORMAT_B8G8R8A8_UNORM,
+                          srgbFirst ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                          srgbFirst ? VK_FORMAT_B8G8R8A8_UNORM : VK_FORMAT_B8G8R8A8_SRGB,
+                          srgbFirst ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R8G8B8A8_SRGB}) {
     for (const VkSurfaceFormatKHR& f : formats) {
       if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
     }

@@ -20,8 +20,10 @@ struct Swapchain {
   bool transferSrc = false;  // images can be copied from (Renderer::capture() of a window)
 };
 
-// B8G8R8A8_SRGB or R8G8B8A8_SRGB in the sRGB colour space when offered, else the first format.
-Result<VkSurfaceFormatKHR> chooseSurfaceFormat(const Device& device, VkSurfaceKHR surface);
+// A B8G8R8A8 or R8G8B8A8 format in the sRGB colour space when offered (*_SRGB first where
+// preferSrgbTarget(device, samples), else *_UNORM first: the shaders encode then), else the first.
+Result<VkSurfaceFormatKHR> chooseSurfaceFormat(const Device& device, VkSurfaceKHR surface,
+                                               VkSampleCountFlagBits samples);
 
 // The extent a swapchain created now would get: the surface's current extent, or `framebuffer`
 // clamped to the surface's limits where the surface leaves the size to the application. A zero

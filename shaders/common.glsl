@@ -15,21 +15,37 @@ layout(push_constant) uniform PushBlock {
   DrawConstants draw;
 };
 
+// Specialization constant CETVIEW_SPEC_COLOR_PUSHED of the face pipelines: true where faces are
+// drawn in runs of one colour (devices without multi-draw indirect) and draw.color always holds it,
+// so no colour travels from vertex to fragment (software rasterisers set up every varying per
+// triangle); false: the colour comes from the face table, picked by gl_InstanceIndex.
+layout(constant_id = CETVIEW_SPEC_COLOR_PUSHED) const bool kColorPushed = false;
+// Specialization constant CETVIEW_SPEC_ENCODE_SRGB: the target's format is UNORM (see toTarget).
+layout(constant_id = CETVIEW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
+
 // sRGB -> linear: a cubic fit of the IEC 61966-2-1 curve (within 0.3%), cheap enough per vertex
 // on software rasterisers where pow() is not.
 vec3 srgbToLinear(vec3 c) {
   return c * (c * (c * 0.305306011 + 0.682171111) + 0.012522878);
 }
 
-// Linear -> sRGB (exact), only for UNORM targets.
+// Linear -> sRGB for UNORM targets: the power segment of IEC 61966-2-1 as a minimax fit in c^1/2,
+// c^1/4 and c^1/8, within 0.15/255 of the exact curve (an 8-bit result at most one step off);
+// three square roots per channel cost a software rasteriser less than pow() or its own sRGB store.
 vec3 linearToSrgb(vec3 c) {
-  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
+  vec3 s1 = sqrt(c);
+  vec3 s2 = sqrt(s1);
+  vec3 s3 = sqrt(s2);
+  vec3 curve = 0.591531888 * s1 + 0.769093895 * s2 - 0.360071117 * s3;
+  return mix(curve, c * 12.92, lessThan(c, vec3(0.0031308)));
 }
 
-// Final colour for the target: sRGB targets encode in hardware, UNORM ones need it done here.
+// Final colour for the target: sRGB targets encode in hardware, UNORM ones need it done here. A
+// specialization constant, not a uniform: software rasterisers evaluate both sides of a uniform
+// branch this small (an unused pow() per pixel was a tenth of a 1M-triangle frame on lavapipe).
 vec4 toTarget(vec3 linearColor) {
   vec3 c = clamp(linearColor, 0.0, 1.0);
-  if ((globals.flags.x & CETVIEW_FLAG_ENCODE_SRGB) != 0u) c = linearToSrgb(c);
+  if (kEncodeSrgb) c = linearToSrgb(c);
   return vec4(c, 1.0);
 }
 

@@ -33,6 +33,7 @@ void main() {
   s *= s;
 
   vec4 k = globals.lightIntensity;
-  vec3 lit = inColor * (k.x * facing + k.y * key + k.z * sky) + vec3(k.w * s);
+  vec3 color = kColorPushed ? draw.color.rgb : inColor;
+  vec3 lit = color * (k.x * facing + k.y * key + k.z * sky) + vec3(k.w * s);
   outColor = toTarget(lit);
 }

@@ -22,8 +22,9 @@ using uint = std::uint32_t;
 #define CETVIEW_BINDING_GLOBALS 0  // uniform Globals, one per frame in flight
 #define CETVIEW_BINDING_FACES 1    // storage uint[]: per face, packed sRGB RGBA8 (R in the low byte)
 
-// Globals.flags.x bits.
-#define CETVIEW_FLAG_ENCODE_SRGB 1u  // the target is UNORM: shaders encode sRGB themselves
+// Specialization constant ids (VkBool32 each), set by every pipeline (engine/pipelines.cpp).
+#define CETVIEW_SPEC_COLOR_PUSHED 0  // face colour in DrawConstants::color, none per vertex
+#define CETVIEW_SPEC_ENCODE_SRGB 1   // the target is UNORM: shaders encode sRGB themselves
 
 // Per frame: what every draw of the frame shares.
 struct Globals {
@@ -31,7 +32,6 @@ struct Globals {
   vec4 backgroundBottom;  // gradient colour at the bottom
   vec4 edgeColor;         // B-rep edge lines
   vec4 lightIntensity;    // x headlight, y key light, z ambient (sky), w specular
-  uvec4 flags;            // x: CETVIEW_FLAG_* bits
 };
 
 // Push constants of each draw (one instance of a part). Lighting happens in part space: the CPU
@@ -48,6 +48,7 @@ struct DrawConstants {
   vec4 keyLight;       // xyz: unit direction towards the key light
   vec4 up;             // xyz: unit screen-up direction (the sky of the hemisphere ambient)
   vec4 color;          // linear RGBA used for every face when a >= 0; a < 0: the per-face colours
+                       // (with CETVIEW_SPEC_COLOR_PUSHED always a colour: the current run's)
 };
 
 #ifdef __cplusplus

@@ -11,5 +11,6 @@ layout(location = 1) flat in vec3 inColor;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  outColor = toTarget(inColor * 0.6);
+  vec3 color = kColorPushed ? draw.color.rgb : inColor;
+  outColor = toTarget(color * 0.6);
 }

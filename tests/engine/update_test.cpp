@@ -1,6 +1,7 @@
 // Progressive updates on a live renderer: a replaced face changes only its own part of the image,
 // large changes spread over frames within the byte budget without ever showing half a face,
-// buffers grow, visibility and colour toggles, and the direct-draw path matches the indirect one.
+// buffers grow, visibility and colour toggles, the direct-draw path matches the indirect one and
+// merges adjacent faces of one colour.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -203,6 +204,53 @@ TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
   expectMatchesGolden(shot(*r, camera), "sphere_shaded_edges");
 }
 
+TEST_F(UpdateTest, AdjacentFacesOfOneColourAndAllEdgesAreDrawnInFewCalls) {
+  // One-by-one draws (lavapipe's default) merge the faces whose index slots follow each other and
+  // share a colour, and every edge of a part into one line list; the picture stays the same.
+  MeshData box = cube(2.0f, 4);  // six faces, six colours, twelve edges
+  box.closedSolid = false;       // every face drawn (no culling of back-facing faces)
+  Renderer* r = load(box);
+  ASSERT_NE(r, nullptr);
+  ASSERT_FALSE(r->usesIndirectDraws()) << "the test must exercise the one-by-one path";
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage sixColours = shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
+  EXPECT_EQ(r->lastEdgeDrawCalls(), 1u);
+
+  // Faces 1 and 2 take face 0's colour: one run of three, then faces 3, 4 and 5.
+  const Color8 first = box.faces[0].color;
+  for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, first).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  RgbaImage merged = shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 4u);
+
+  // A hidden face splits its run; an instance colour ignores the face colours: one draw again.
+  ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, false).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  (void)shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 5u);
+  ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, true).ok());
+  ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, Color8{200, 60, 60, 255}).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  (void)shot(*r, camera);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 1u);
+  ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, std::nullopt).ok());
+  for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, box.faces[f].color).ok());
+  ASSERT_TRUE(r->finishUploads().ok());
+  EXPECT_EQ(compareImages(sixColours, shot(*r, camera), 0).differing, 0u);
+  EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
+
+  // The merged draws look like the same colours given from the start (this replaces `r`).
+  MeshData recoloured = box;
+  for (std::uint32_t f : {1u, 2u}) recoloured.faces[f].color = first;
+  Renderer* reference = load(recoloured);
+  ASSERT_NE(reference, nullptr);
+  ASSERT_TRUE(reference->finishUploads().ok());
+  EXPECT_EQ(compareImages(shot(*reference, camera), merged, 0).differing, 0u);
+}
+
 TEST_F(UpdateTest, HidingRecolouringAndClearing) {
   RendererOptions msaa4;
   msaa4.msaaSamples = 4;  // the end compares with a golden
@@ -262,9 +310,13 @@ TEST_F(UpdateTest, ClosedSolidsLookTheSameWithBackFacesCulled) {
   Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
   RgbaImage culled = shot(*r, camera);
   saveOutput(culled, "closed_culled");
+  // The cube's three far sides (a cluster each) and the sphere's far octant (4 clusters of
+  // kClusterTriangles), with parts of the octants next to it, face away as a whole: not drawn.
+  EXPECT_GE(r->lastClustersCulled(), 7u);
   // Mirrored instances of a closed part are drawn two-sided, so they do not turn inside out.
   ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
   RgbaImage culledMirror = shot(*r, camera);
+  EXPECT_EQ(r->lastClustersCulled(), 0u);
 
   scene.clear();
   ASSERT_TRUE(addMesh(scene, open).ok());
@@ -272,6 +324,79 @@ TEST_F(UpdateTest, ClosedSolidsLookTheSameWithBackFacesCulled) {
   EXPECT_LE(compareImages(culled, shot(*r, camera), 2).differing, 20u);
   ASSERT_TRUE(scene.setInstanceTransform(InstanceId{0}, mirror).ok());
   EXPECT_LE(compareImages(culledMirror, shot(*r, camera), 2).differing, 20u);
+}
+
+TEST_F(UpdateTest, FacesOutOfViewOrFacingAwayAreLeftOutWithoutChangingThePicture) {
+  // One-by-one draws leave out faces outside the frustum and wholly back-facing faces of culled
+  // solids (face_culling.h); indirect draws draw everything. Same pictures, close up and far, in
+  // perspective and orthographic views.
+  MeshData grid;
+  for (int i = 0; i < 9; ++i)
+    append(grid, sphere(1.0f, 8, glm::vec3(2.5f * float(i % 3), 2.5f * float(i / 3), 0.0f)));
+  append(grid, cube(1.5f, 2, glm::vec3(2.5f, 2.5f, 2.0f)));
+  ASSERT_TRUE(grid.closedSolid);
+  Bounds all;
+  for (const MeshVertex& v : grid.vertices) all.add(glm::vec3(v.position[0], v.position[1], v.position[2]));
+  Bounds corner;  // the first sphere only: the others are out of view
+  corner.add(glm::vec3(-1.0f));
+  corner.add(glm::vec3(1.0f));
+  std::vector<Camera> cameras;
+  for (Projection projection : {Projection::kPerspective, Projection::kOrthographic}) {
+    for (const Bounds& b : {all, corner}) {
+      for (StandardView v : {StandardView::kIso, StandardView::kTop, StandardView::kFront}) {
+        cameras.push_back(standardView(v, b, 1.0f, projection));
+      }
+    }
+  }
+
+  RendererOptions msaa4;
+  msaa4.msaaSamples = 4;
+  Renderer* r = load(grid, msaa4);
+  ASSERT_NE(r, nullptr);
+  ASSERT_FALSE(r->usesIndirectDraws());
+  ASSERT_TRUE(r->finishUploads().ok());
+  std::vector<RgbaImage> culled;
+  std::uint32_t culledFaces = 0;
+  for (const Camera& camera : cameras) {
+    culled.push_back(shot(*r, camera));
+    culledFaces += r->lastClustersCulled();
+  }
+  EXPECT_GT(culledFaces, 100u);
+
+  RendererOptions indirect = msaa4;
+  indirect.scene.indirectDrawsOnCpu = true;
+  Renderer* reference = load(grid, indirect);
+  ASSERT_NE(reference, nullptr);
+  ASSERT_TRUE(reference->usesIndirectDraws());
+  ASSERT_TRUE(reference->finishUploads().ok());
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    // Colours differ by rounding only: the indirect shaders convert the face colours themselves.
+    EXPECT_EQ(compareImages(culled[i], shot(*reference, cameras[i]), 2).differing, 0u) << "camera " << i;
+  }
+}
+
+TEST_F(UpdateTest, InstancesOutOfViewAreNotDrawn) {
+  Renderer* r = load(sphere(1.0f, 16));
+  ASSERT_NE(r, nullptr);
+  Scene& scene = r->scene();
+  ASSERT_TRUE(r->finishUploads().ok());
+  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+  RgbaImage one = shot(*r, camera);
+  const std::uint32_t faceDraws = r->lastFaceDrawCalls(), edgeDraws = r->lastEdgeDrawCalls();
+  // A second instance far behind the camera: nothing of it is drawn, and the picture is the same.
+  glm::mat4 away(1.0f);
+  away[3] = glm::vec4(camera.eye() - 50.0f * camera.direction, 1.0f);
+  ASSERT_TRUE(scene.addInstance(PartId{0}, away).ok());
+  EXPECT_EQ(compareImages(one, shot(*r, camera), 0).differing, 0u);
+  EXPECT_EQ(r->lastFaceDrawCalls(), faceDraws);
+  EXPECT_EQ(r->lastEdgeDrawCalls(), edgeDraws);
+  // Moved into view, it is.
+  glm::mat4 near(1.0f);
+  near[3] = glm::vec4(0.5f, 0.0f, 0.0f, 1.0f);
+  ASSERT_TRUE(scene.setInstanceTransform(InstanceId{1}, near).ok());
+  (void)shot(*r, camera);
+  EXPECT_GT(r->lastFaceDrawCalls(), faceDraws);
+  EXPECT_EQ(r->lastEdgeDrawCalls(), 2 * edgeDraws);
 }
 
 TEST_F(UpdateTest, OverlayDrawsInsideTheRenderPassOfRenderedFrames) {
