@@ -57,18 +57,12 @@ double orient2d(Point2 a, Point2 b, Point2 c) {
   const double detLeft = (a.x - c.x) * (b.y - c.y);
   const double detRight = (a.y - c.y) * (b.x - c.x);
   const double det = detLeft - detRight;
-  double detSum;
-  if (detLeft > 0.0) {
-    if (detRight <= 0.0) return det;
-    detSum = detLeft + detRight;
-  } else if (detLeft < 0.0) {
-    if (detRight >= 0.0) return det;
-    detSum = -detLeft - detRight;
-  } else {
-    return det;
-  }
-  const double bound = kOrientBound * detSum;
-  if (det >= bound || -det >= bound) return det;
+  // Shewchuk tests the signs of detLeft and detRight first (opposite signs or a zero cannot cancel);
+  // those branches go either way at random during point location. The single bound below decides
+  // the same cases: when the signs differ or one is zero, |det| is |detLeft| + |detRight| up to
+  // rounding, far above the bound (and det is exactly 0 only when both products are).
+  const double bound = kOrientBound * (std::fabs(detLeft) + std::fabs(detRight));
+  if (std::fabs(det) >= bound) return det;
   return orient2dExact(a, b, c);
 }
 
