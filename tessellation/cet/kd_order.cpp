@@ -208,8 +208,11 @@ void sortRange(Item* first, Item* last) {
 
 }  // namespace
 
-void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n) {
-  if (n < 2) return;
+void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n, Point2* orderedPoints) {
+  if (n < 2) {
+    if (n == 1 && orderedPoints != nullptr) orderedPoints[0] = points[ids[0]];
+    return;
+  }
   std::vector<Item> items(n);
   Box all{points[ids[0]].x, points[ids[0]].y, points[ids[0]].x, points[ids[0]].y};
   for (std::size_t i = 0; i < n; ++i) {
@@ -252,6 +255,9 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n) {
     stack.push_back(Pending{mid + 1, r.hi, upper});
   }
   for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(items[i].id);
+  if (orderedPoints != nullptr) {
+    for (std::size_t i = 0; i < n; ++i) orderedPoints[i] = Point2{fromOrderedBits(items[i].x), fromOrderedBits(items[i].y)};
+  }
 }
 
 }  // namespace cet
