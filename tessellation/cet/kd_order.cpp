@@ -256,7 +256,8 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n, Poin
   }
   for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(items[i].id);
   if (orderedPoints != nullptr) {
-    for (std::size_t i = 0; i < n; ++i) orderedPoints[i] = Point2{fromOrderedBits(items[i].x), fromOrderedBits(items[i].y)};
+    for (std::size_t i = 0; i < n; ++i)
+      orderedPoints[i] = Point2{fromOrderedBits(items[i].x), fromOrderedBits(items[i].y)};
   }
 }
 
