@@ -118,7 +118,9 @@ void CetMesh::flip(TriangleId t, int i, int j) {
   if (c != kInfiniteVertex) L_[c] = u;
 }
 
-SplitResult CetMesh::splitTriangle(TriangleId t, VertexId v) {
+// Flattened: GCC otherwise keeps std::vector::push_back out of line, a call per new triangle on the
+// insertion's hottest path.
+[[gnu::flatten]] SplitResult CetMesh::splitTriangle(TriangleId t, VertexId v) {
   const Triangle T = triangles_[t];
   const VertexId a = T.M[0], b = T.M[1], c = T.M[2];
   const std::uint8_t out = T.bits & kOutsideBit;
