@@ -142,8 +142,9 @@ double incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * aLift +
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * bLift +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * cLift;
-  const double bound = kIncircleBound * permanent;
-  if (det > bound || -det > bound) return det;
+  // One test on |det|: the sign itself goes either way at random in the Lawson loop, and the
+  // caller branches on it once.
+  if (std::fabs(det) > kIncircleBound * permanent) return det;
   return incircleAdaptive(a, b, c, d, permanent);
 }
 
