@@ -21,9 +21,11 @@ namespace {
 struct Box {
   double minX, minY, maxX, maxY;
 };
+enum class Sorted : std::uint8_t { kNo, kAlongX, kAlongY };
 struct Pending {
   std::uint32_t lo, hi;
   Box box;
+  Sorted sorted;  // whether the range is already sorted along an axis (small ranges, see below)
 };
 // The points are copied next to their ids while partitioning, so the selection reads contiguous
 // memory instead of chasing ids into the vertex array (several times faster on large inputs). The
@@ -38,6 +40,7 @@ struct Item {
 // Maps finite doubles to unsigned integers in the same order (-0 just below +0), so that a
 // lexicographic comparison of two coordinates becomes one 128-bit integer comparison.
 std::uint64_t orderedBits(double v) {
+  if (v == 0.0) v = 0.0;  // -0 and +0 are one value: same key, as the comparisons elsewhere see them
   std::uint64_t u;
   std::memcpy(&u, &v, sizeof u);
   return (u >> 63) != 0 ? ~u : (u | (std::uint64_t{1} << 63));
@@ -49,8 +52,8 @@ double fromOrderedBits(std::uint64_t k) {
   return v;
 }
 
-// Ranges this small are sorted along their longer axis instead of split further: a sorted range is
-// already a kd permutation (every sub-range's median splits it on that axis).
+// Ranges this small are finished with insertion sorts: sorting a range along its axis places its
+// median and both sides at once, and its sub-ranges along the same axis need nothing more.
 constexpr std::size_t kLeafSize = 16;
 // Below this size the pivot is the median of three; above it, a Floyd-Rivest sample.
 constexpr std::size_t kSampleThreshold = 512;
@@ -224,22 +227,26 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n, Poin
   // Depth-first with an explicit stack (depth about log2 n); the child boxes are the parent's box
   // cut at the median, which is enough to choose the longer axis without rescanning points.
   std::vector<Pending> stack;
-  stack.push_back(Pending{0, static_cast<std::uint32_t>(n), all});
+  stack.push_back(Pending{0, static_cast<std::uint32_t>(n), all, Sorted::kNo});
   Item* const it = items.data();
   while (!stack.empty()) {
     const Pending r = stack.back();
     stack.pop_back();
+    if (r.hi - r.lo < 2) continue;
     const bool splitX = (r.box.maxX - r.box.minX) >= (r.box.maxY - r.box.minY);
-    if (r.hi - r.lo <= kLeafSize) {
-      if (splitX) {
-        sortRange<true>(it + r.lo, it + r.hi);
-      } else {
-        sortRange<false>(it + r.lo, it + r.hi);
-      }
-      continue;
-    }
+    const Sorted axis = splitX ? Sorted::kAlongX : Sorted::kAlongY;
+    Sorted childrenSorted = Sorted::kNo;
     const std::uint32_t mid = r.lo + (r.hi - r.lo) / 2;
-    if (splitX) {
+    if (r.hi - r.lo <= kLeafSize) {
+      if (r.sorted != axis) {
+        if (splitX) {
+          sortRange<true>(it + r.lo, it + r.hi);
+        } else {
+          sortRange<false>(it + r.lo, it + r.hi);
+        }
+      }
+      childrenSorted = axis;
+    } else if (splitX) {
       selectMedian<true>(it + r.lo, it + r.hi, it + mid);
     } else {
       selectMedian<false>(it + r.lo, it + r.hi, it + mid);
@@ -251,8 +258,8 @@ void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n, Poin
     } else {
       lower.maxY = upper.minY = fromOrderedBits(m.y);
     }
-    stack.push_back(Pending{r.lo, mid, lower});
-    stack.push_back(Pending{mid + 1, r.hi, upper});
+    stack.push_back(Pending{r.lo, mid, lower, childrenSorted});
+    stack.push_back(Pending{mid + 1, r.hi, upper, childrenSorted});
   }
   for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(items[i].id);
   if (orderedPoints != nullptr) {
