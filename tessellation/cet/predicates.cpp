@@ -93,11 +93,53 @@ Expansion<4> exactCross(double x, double y, double z, double w) {
   return orient2dExact(a, b, c);
 }
 
+// The in-circle determinant of exact differences in plain doubles, each operation checked with its
+// error-free transformation: when none rounded (small integer coordinates: grids), the result is
+// the exact determinant. Otherwise `exact` is false and the result means nothing.
+double incircleIfNothingRounds(double adx, double ady, double bdx, double bdy, double cdx, double cdy,
+                               bool& exact) {
+  bool rounded = false;
+  const auto mul = [&](double x, double y) {
+    double p, e;
+    exact::twoProduct(x, y, p, e);
+    rounded |= e != 0.0;
+    return p;
+  };
+  const auto add = [&](double x, double y) {
+    double s, e;
+    exact::twoSum(x, y, s, e);
+    rounded |= e != 0.0;
+    return s;
+  };
+  const auto sub = [&](double x, double y) {
+    double s, e;
+    exact::twoDiff(x, y, s, e);
+    rounded |= e != 0.0;
+    return s;
+  };
+  const double bc = sub(mul(bdx, cdy), mul(cdx, bdy));
+  const double ca = sub(mul(cdx, ady), mul(adx, cdy));
+  const double ab = sub(mul(adx, bdy), mul(bdx, ady));
+  const double aLift = add(mul(adx, adx), mul(ady, ady));
+  const double bLift = add(mul(bdx, bdx), mul(bdy, bdy));
+  const double cLift = add(mul(cdx, cdx), mul(cdy, cdy));
+  const double det = add(add(mul(aLift, bc), mul(bLift, ca)), mul(cLift, ab));
+  exact = !rounded;
+  return det;
+}
+
 [[gnu::noinline]] double incircleAdaptive(Point2 a, Point2 b, Point2 c, Point2 d, double permanent) {
   gIncircleExact.fetch_add(1, std::memory_order_relaxed);
   const Rounded adx = roundedDifference(a.x, d.x), ady = roundedDifference(a.y, d.y);
   const Rounded bdx = roundedDifference(b.x, d.x), bdy = roundedDifference(b.y, d.y);
   const Rounded cdx = roundedDifference(c.x, d.x), cdy = roundedDifference(c.y, d.y);
+  const bool inexact = adx.inexact || ady.inexact || bdx.inexact || bdy.inexact || cdx.inexact || cdy.inexact;
+  if (!inexact) {
+    bool exact = false;
+    const double det =
+        incircleIfNothingRounds(adx.value, ady.value, bdx.value, bdy.value, cdx.value, cdy.value, exact);
+    if (exact) return det;
+  }
   const Expansion<4> bc = exactCross(bdx.value, cdy.value, cdx.value, bdy.value);
   const Expansion<4> ca = exactCross(cdx.value, ady.value, adx.value, cdy.value);
   const Expansion<4> ab = exactCross(adx.value, bdy.value, bdx.value, ady.value);
@@ -105,7 +147,6 @@ Expansion<4> exactCross(double x, double y, double z, double w) {
   const Expansion<4> bLift = sum(exactProduct(bdx.value, bdx.value), exactProduct(bdy.value, bdy.value));
   const Expansion<4> cLift = sum(exactProduct(cdx.value, cdx.value), exactProduct(cdy.value, cdy.value));
   const double det = sum(sum(product(aLift, bc), product(bLift, ca)), product(cLift, ab)).sign();
-  const bool inexact = adx.inexact || ady.inexact || bdx.inexact || bdy.inexact || cdx.inexact || cdy.inexact;
   if (!inexact) return det;
   if (std::fabs(det) > kIncircleBoundB * permanent) return det;
   return incircleExact(a, b, c, d);
