@@ -60,12 +60,25 @@ constexpr std::size_t kSampleThreshold = 512;
 
 // Lexicographic order on (key axis, other axis), a strict total order on distinct points: runs of
 // equal coordinates (grids) are split along the other axis, which keeps each subtree compact.
-// Evaluated as one 128-bit comparison (compare and subtract-with-borrow, no branch).
-__extension__ using Wide = unsigned __int128;
+// Evaluated as one 128-bit comparison (compare and subtract-with-borrow, no branch) where the
+// compiler has 128-bit integers (64-bit targets); the two-word form is about 20% slower here.
 template <bool kAlongX>
 struct Less {
-  static Wide key(const Item& a) { return kAlongX ? (Wide{a.x} << 64) | a.y : (Wide{a.y} << 64) | a.x; }
-  bool operator()(const Item& a, const Item& b) const { return key(a) < key(b); }
+#ifdef __SIZEOF_INT128__
+  __extension__ using Wide = unsigned __int128;
+  static Wide key(const Item& a) {
+    return kAlongX ? (Wide{a.x} << 64) | a.y : (Wide{a.y} << 64) | a.x;
+  }
+  bool operator()(const Item& a, const Item& b) const {
+    return key(a) < key(b);
+  }
+#else
+  bool operator()(const Item& a, const Item& b) const {
+    const std::uint64_t a0 = kAlongX ? a.x : a.y, b0 = kAlongX ? b.x : b.y;
+    const std::uint64_t a1 = kAlongX ? a.y : a.x, b1 = kAlongX ? b.y : b.x;
+    return (a0 < b0) | ((a0 == b0) & (a1 < b1));
+  }
+#endif
 };
 
 template <class Order>
