@@ -9,30 +9,6 @@ void CetMesh::reserve(std::size_t vertices, std::size_t triangles) {
   triangles_.reserve(triangles);
 }
 
-int CetMesh::ghostIndex(TriangleId t) const {
-  const Triangle& tr = triangles_[t];
-  if (tr.M[0] == kInfiniteVertex) return 0;
-  if (tr.M[1] == kInfiniteVertex) return 1;
-  if (tr.M[2] == kInfiniteVertex) return 2;
-  return -1;
-}
-
-int CetMesh::indexOf(TriangleId t, VertexId v) const {
-  const Triangle& tr = triangles_[t];
-  if (tr.M[0] == v) return 0;
-  if (tr.M[1] == v) return 1;
-  if (tr.M[2] == v) return 2;
-  return -1;
-}
-
-int CetMesh::edgeTo(TriangleId t, TriangleId n) const {
-  const Triangle& tr = triangles_[t];
-  if (tr.N[0] == n) return 0;
-  if (tr.N[1] == n) return 1;
-  if (tr.N[2] == n) return 2;
-  return -1;
-}
-
 EdgeRef CetMesh::twin(EdgeRef e) const {
   const TriangleId u = neighbor(e.t, e.i);
   // The neighbour's copy of the edge is opposite the vertex that is not on it; with two triangles
@@ -137,13 +113,14 @@ void CetMesh::flip(TriangleId t, int i, int j) {
   // The two outer triangles that changed owner point back to their new neighbour.
   replaceNeighbor(nBD, u, t);
   replaceNeighbor(nCA, t, u);
-  if (a != kInfiniteVertex) L_[a] = t;
+  // a and d are in both new triangles; b left u and c left t, so only their L may now be stale.
   if (b != kInfiniteVertex) L_[b] = t;
-  if (d != kInfiniteVertex) L_[d] = t;
   if (c != kInfiniteVertex) L_[c] = u;
 }
 
-SplitResult CetMesh::splitTriangle(TriangleId t, VertexId v) {
+// Flattened: GCC otherwise keeps std::vector::push_back out of line, a call per new triangle on the
+// insertion's hottest path.
+[[gnu::flatten]] SplitResult CetMesh::splitTriangle(TriangleId t, VertexId v) {
   const Triangle T = triangles_[t];
   const VertexId a = T.M[0], b = T.M[1], c = T.M[2];
   const std::uint8_t out = T.bits & kOutsideBit;
@@ -156,16 +133,11 @@ SplitResult CetMesh::splitTriangle(TriangleId t, VertexId v) {
   triangles_.push_back(Triangle{{v, c, a}, {T.N[1], t2, t0}, static_cast<std::uint8_t>(f(1) | out)});
   triangles_.push_back(Triangle{{v, a, b}, {T.N[2], t0, t1}, static_cast<std::uint8_t>(f(2) | out)});
   // Old outer neighbours across (c, a) and (a, b) now see t1 and t2.
-  for (TriangleId& n : triangles_[T.N[1]].N) {
-    if (n == t) { n = t1; break; }
-  }
-  for (TriangleId& n : triangles_[T.N[2]].N) {
-    if (n == t) { n = t2; break; }
-  }
+  replaceNeighbor(T.N[1], t, t1);
+  replaceNeighbor(T.N[2], t, t2);
+  // b and c are still in t0 (= t); a is not.
   L_[v] = t0;
   if (a != kInfiniteVertex) L_[a] = t1;
-  if (b != kInfiniteVertex) L_[b] = t0;
-  if (c != kInfiniteVertex) L_[c] = t0;
   SplitResult r;
   r.t[0] = t0, r.t[1] = t1, r.t[2] = t2, r.count = 3;
   return r;
@@ -199,12 +171,8 @@ SplitResult CetMesh::splitEdge(TriangleId t, int i, VertexId v) {
   triangles_[t3] = Triangle{{v, b, d}, {nBD, t4, t2}, static_cast<std::uint8_t>(fBD | (fU << 4) | uOut)};
   triangles_.push_back(Triangle{{v, d, c}, {nDC, t1, t3}, static_cast<std::uint8_t>(fDC | (fU << 2) | uOut)});
 
-  for (TriangleId& n : triangles_[nAB].N) {
-    if (n == t) { n = t2; break; }
-  }
-  for (TriangleId& n : triangles_[nDC].N) {
-    if (n == u) { n = t4; break; }
-  }
+  replaceNeighbor(nAB, t, t2);
+  replaceNeighbor(nDC, u, t4);
   L_[v] = t1;
   if (a != kInfiniteVertex) L_[a] = t1;
   if (b != kInfiniteVertex) L_[b] = t2;

@@ -89,12 +89,12 @@ class CetMesh {
   bool isConstrained(TriangleId t, int i) const { return flag(t, i) != kUnconstrained; }
   bool isOutside(TriangleId t) const { return (triangles_[t].bits & kOutsideBit) != 0; }
   // Local index (0..2) of the infinite vertex, or -1 for a finite triangle.
-  int ghostIndex(TriangleId t) const;
+  int ghostIndex(TriangleId t) const { return indexOf(t, kInfiniteVertex); }
   bool isGhost(TriangleId t) const { return ghostIndex(t) >= 0; }
   // Local index of v in t, or -1.
-  int indexOf(TriangleId t, VertexId v) const;
+  int indexOf(TriangleId t, VertexId v) const { return slotOrNone(triangles_[t].M, v); }
   // Local index of the edge of t shared with neighbour n, or -1.
-  int edgeTo(TriangleId t, TriangleId n) const;
+  int edgeTo(TriangleId t, TriangleId n) const { return slotOrNone(triangles_[t].N, n); }
   // The same edge seen from the neighbouring triangle.
   EdgeRef twin(EdgeRef e) const;
   // Edge e's endpoints in t's counter-clockwise direction.
@@ -135,16 +135,23 @@ class CetMesh {
 
  private:
   static constexpr std::uint8_t kOutsideBit = 1u << 6;
+  // Which of the three slots holds x, which must be there exactly once. Computed without branches:
+  // the slot is as good as random, so a chain of comparisons mispredicts about once per call, and
+  // the hot paths (splits, flips, the Lawson loop) make several such lookups per inserted point.
+  static int slotOf(const std::uint32_t (&slots)[3], std::uint32_t x) {
+    assert(!(slots[1] == x && slots[2] == x));
+    return static_cast<int>(slots[1] == x) | (static_cast<int>(slots[2] == x) << 1);
+  }
+  static int slotOrNone(const std::uint32_t (&slots)[3], std::uint32_t x) {
+    const int k = slotOf(slots, x);
+    return slots[k] == x ? k : -1;
+  }
   void setFlagOneSide(TriangleId t, int i, EdgeFlag f);
   void replaceNeighbor(TriangleId t, TriangleId from, TriangleId to) {
-    TriangleId* n = triangles_[t].N;
-    if (n[0] == from) {
-      n[0] = to;
-    } else if (n[1] == from) {
-      n[1] = to;
-    } else {
-      n[2] = to;
-    }
+    TriangleId(&n)[3] = triangles_[t].N;
+    const int k = slotOf(n, from);
+    assert(n[k] == from);
+    n[k] = to;
   }
   void touchVertices(TriangleId t);  // points each finite vertex's L at t
 

@@ -68,6 +68,16 @@ inline Expansion<2> difference(double a, double b) {
   return e;
 }
 
+// The exact product a * b of two doubles as an expansion.
+inline Expansion<2> exactProduct(double a, double b) {
+  Expansion<2> e;
+  double x, y;
+  twoProduct(a, b, x, y);
+  if (y != 0.0) e.c[e.n++] = y;
+  if (x != 0.0) e.c[e.n++] = x;
+  return e;
+}
+
 // h = e + f with zero components removed; returns the length of h (at most en + fn). h must not
 // alias e or f. Merges the components by magnitude, then carries a running two-sum (Shewchuk's
 // fast-expansion-sum, with the always-correct two-sum at each step).

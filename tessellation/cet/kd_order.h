@@ -14,8 +14,10 @@
 
 namespace cet {
 
-// Rearranges ids[0, n) (indices into points) into the kd permutation. O(n log n), in place.
-void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n);
+// Rearranges ids[0, n) (indices into points) into the kd permutation. O(n log n), in place. If
+// orderedPoints is given, it receives points[ids[i]] for each i, read from the partitioning's own
+// copy (cheaper for the caller than gathering them through ids).
+void kdPermutation(const Point2* points, std::uint32_t* ids, std::size_t n, Point2* orderedPoints = nullptr);
 
 struct KdRange {
   std::uint32_t lo, hi;

@@ -42,13 +42,10 @@ bool triangulatePoly(const PolyData& data, PolyTriangulation& out, std::string& 
   const std::size_t n = data.points.size();
   out.inputOf.resize(n);
   std::iota(out.inputOf.begin(), out.inputOf.end(), 0u);
-  kdPermutation(data.points.data(), out.inputOf.data(), n);
-  out.internalOf.resize(n);
   std::vector<Point2> ordered(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    out.internalOf[out.inputOf[i]] = static_cast<std::uint32_t>(i);
-    ordered[i] = data.points[out.inputOf[i]];
-  }
+  kdPermutation(data.points.data(), out.inputOf.data(), n, ordered.data());
+  out.internalOf.resize(n);
+  for (std::size_t i = 0; i < n; ++i) out.internalOf[out.inputOf[i]] = static_cast<std::uint32_t>(i);
   Triangulator& tri = out.tri;
   tri.reserve(n);
   tri.addVertices(ordered.data(), n);

@@ -1,5 +1,7 @@
-// Exact orient2d / incircle: Shewchuk's floating-point filter (error bounds A of his 1997 paper),
-// then an exact evaluation with expansion arithmetic when the filter cannot decide.
+// Exact orient2d / incircle, after Shewchuk's adaptive scheme: a floating-point filter (his error
+// bounds A), then the determinant of the rounded coordinate differences evaluated exactly (his stage
+// B, with bounds derived below), and the full expansion of the original coordinates only when that
+// cannot decide either.
 #include "predicates.h"
 
 #include <atomic>
@@ -13,17 +15,28 @@ namespace {
 constexpr double kEpsilon = 1.1102230246251565e-16;  // 2^-53, half an ulp of 1
 constexpr double kOrientBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 constexpr double kIncircleBound = (10.0 + 96.0 * kEpsilon) * kEpsilon;
+// Stage B. Each rounded difference is the true one times (1 + d), |d| <= eps, and each term of the
+// determinant is a product of 2 (orient) or 4 (incircle) differences, so the exact determinant of
+// the rounded differences is within about 2 eps (4 eps) of the permanent from the true one. The
+// permanents the filters computed in floating point are that sum of absolute terms up to a few more
+// roundings, and the largest component of an expansion is its value within 2 eps: one more eps of
+// room covers both.
+constexpr double kOrientBoundB = 3.0 * kEpsilon;
+constexpr double kIncircleBoundB = 5.0 * kEpsilon;
 
 std::atomic<unsigned long long> gOrientExact{0};
 std::atomic<unsigned long long> gIncircleExact{0};
+std::atomic<unsigned long long> gOrientFull{0};
+std::atomic<unsigned long long> gIncircleFull{0};
 
 using exact::difference;
+using exact::exactProduct;
 using exact::Expansion;
 using exact::product;
 using exact::sum;
 
 double orient2dExact(Point2 a, Point2 b, Point2 c) {
-  gOrientExact.fetch_add(1, std::memory_order_relaxed);
+  gOrientFull.fetch_add(1, std::memory_order_relaxed);
   const Expansion<2> acx = difference(a.x, c.x), acy = difference(a.y, c.y);
   const Expansion<2> bcx = difference(b.x, c.x), bcy = difference(b.y, c.y);
   const Expansion<8> left = product(acx, bcy);
@@ -32,7 +45,7 @@ double orient2dExact(Point2 a, Point2 b, Point2 c) {
 }
 
 double incircleExact(Point2 a, Point2 b, Point2 c, Point2 d) {
-  gIncircleExact.fetch_add(1, std::memory_order_relaxed);
+  gIncircleFull.fetch_add(1, std::memory_order_relaxed);
   const Expansion<2> adx = difference(a.x, d.x), ady = difference(a.y, d.y);
   const Expansion<2> bdx = difference(b.x, d.x), bdy = difference(b.y, d.y);
   const Expansion<2> cdx = difference(c.x, d.x), cdy = difference(c.y, d.y);
@@ -51,25 +64,107 @@ double incircleExact(Point2 a, Point2 b, Point2 c, Point2 d) {
   return sum(sum(aTerm, bTerm), cTerm).sign();
 }
 
+// A coordinate difference rounded to a double, and whether the rounding lost anything.
+struct Rounded {
+  double value;
+  bool inexact;
+};
+Rounded roundedDifference(double a, double b) {
+  double value, tail;
+  exact::twoDiff(a, b, value, tail);
+  return Rounded{value, tail != 0.0};
+}
+
+// x * y - z * w, exactly.
+Expansion<4> exactCross(double x, double y, double z, double w) {
+  return sum(exactProduct(x, y), exact::negate(exactProduct(z, w)));
+}
+
+// The stages after the filter, out of line: the hot callers inline only the filter. detSum is the
+// filter's permanent |detLeft| + |detRight|.
+[[gnu::noinline]] double orient2dAdaptive(Point2 a, Point2 b, Point2 c, double detSum) {
+  gOrientExact.fetch_add(1, std::memory_order_relaxed);
+  const Rounded acx = roundedDifference(a.x, c.x), acy = roundedDifference(a.y, c.y);
+  const Rounded bcx = roundedDifference(b.x, c.x), bcy = roundedDifference(b.y, c.y);
+  const double det = exactCross(acx.value, bcy.value, acy.value, bcx.value).sign();
+  // With no difference rounded (integer grids; nearby points, by Sterbenz's lemma) it is exact.
+  if (!(acx.inexact || acy.inexact || bcx.inexact || bcy.inexact)) return det;
+  if (std::fabs(det) > kOrientBoundB * detSum) return det;
+  return orient2dExact(a, b, c);
+}
+
+// The in-circle determinant of exact differences in plain doubles, each operation checked with its
+// error-free transformation: when none rounded (small integer coordinates: grids), the result is
+// the exact determinant. Otherwise `exact` is false and the result means nothing.
+double incircleIfNothingRounds(double adx, double ady, double bdx, double bdy, double cdx, double cdy,
+                               bool& exact) {
+  bool rounded = false;
+  const auto mul = [&](double x, double y) {
+    double p, e;
+    exact::twoProduct(x, y, p, e);
+    rounded |= e != 0.0;
+    return p;
+  };
+  const auto add = [&](double x, double y) {
+    double s, e;
+    exact::twoSum(x, y, s, e);
+    rounded |= e != 0.0;
+    return s;
+  };
+  const auto sub = [&](double x, double y) {
+    double s, e;
+    exact::twoDiff(x, y, s, e);
+    rounded |= e != 0.0;
+    return s;
+  };
+  const double bc = sub(mul(bdx, cdy), mul(cdx, bdy));
+  const double ca = sub(mul(cdx, ady), mul(adx, cdy));
+  const double ab = sub(mul(adx, bdy), mul(bdx, ady));
+  const double aLift = add(mul(adx, adx), mul(ady, ady));
+  const double bLift = add(mul(bdx, bdx), mul(bdy, bdy));
+  const double cLift = add(mul(cdx, cdx), mul(cdy, cdy));
+  const double det = add(add(mul(aLift, bc), mul(bLift, ca)), mul(cLift, ab));
+  exact = !rounded;
+  return det;
+}
+
+[[gnu::noinline]] double incircleAdaptive(Point2 a, Point2 b, Point2 c, Point2 d, double permanent) {
+  gIncircleExact.fetch_add(1, std::memory_order_relaxed);
+  const Rounded adx = roundedDifference(a.x, d.x), ady = roundedDifference(a.y, d.y);
+  const Rounded bdx = roundedDifference(b.x, d.x), bdy = roundedDifference(b.y, d.y);
+  const Rounded cdx = roundedDifference(c.x, d.x), cdy = roundedDifference(c.y, d.y);
+  const bool inexact = adx.inexact || ady.inexact || bdx.inexact || bdy.inexact || cdx.inexact || cdy.inexact;
+  if (!inexact) {
+    bool exact = false;
+    const double det =
+        incircleIfNothingRounds(adx.value, ady.value, bdx.value, bdy.value, cdx.value, cdy.value, exact);
+    if (exact) return det;
+  }
+  const Expansion<4> bc = exactCross(bdx.value, cdy.value, cdx.value, bdy.value);
+  const Expansion<4> ca = exactCross(cdx.value, ady.value, adx.value, cdy.value);
+  const Expansion<4> ab = exactCross(adx.value, bdy.value, bdx.value, ady.value);
+  const Expansion<4> aLift = sum(exactProduct(adx.value, adx.value), exactProduct(ady.value, ady.value));
+  const Expansion<4> bLift = sum(exactProduct(bdx.value, bdx.value), exactProduct(bdy.value, bdy.value));
+  const Expansion<4> cLift = sum(exactProduct(cdx.value, cdx.value), exactProduct(cdy.value, cdy.value));
+  const double det = sum(sum(product(aLift, bc), product(bLift, ca)), product(cLift, ab)).sign();
+  if (!inexact) return det;
+  if (std::fabs(det) > kIncircleBoundB * permanent) return det;
+  return incircleExact(a, b, c, d);
+}
+
 }  // namespace
 
 double orient2d(Point2 a, Point2 b, Point2 c) {
   const double detLeft = (a.x - c.x) * (b.y - c.y);
   const double detRight = (a.y - c.y) * (b.x - c.x);
   const double det = detLeft - detRight;
-  double detSum;
-  if (detLeft > 0.0) {
-    if (detRight <= 0.0) return det;
-    detSum = detLeft + detRight;
-  } else if (detLeft < 0.0) {
-    if (detRight >= 0.0) return det;
-    detSum = -detLeft - detRight;
-  } else {
-    return det;
-  }
-  const double bound = kOrientBound * detSum;
-  if (det >= bound || -det >= bound) return det;
-  return orient2dExact(a, b, c);
+  // Shewchuk tests the signs of detLeft and detRight first (opposite signs or a zero cannot cancel);
+  // those branches go either way at random during point location. The single bound below decides
+  // the same cases: when the signs differ or one is zero, |det| is |detLeft| + |detRight| up to
+  // rounding, far above the bound (and det is exactly 0 only when both products are).
+  const double detSum = std::fabs(detLeft) + std::fabs(detRight);
+  if (std::fabs(det) >= kOrientBound * detSum) return det;
+  return orient2dAdaptive(a, b, c, detSum);
 }
 
 double incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
@@ -88,15 +183,18 @@ double incircle(Point2 a, Point2 b, Point2 c, Point2 d) {
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * aLift +
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * bLift +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * cLift;
-  const double bound = kIncircleBound * permanent;
-  if (det > bound || -det > bound) return det;
-  return incircleExact(a, b, c, d);
+  // One test on |det|: the sign itself goes either way at random in the Lawson loop, and the
+  // caller branches on it once.
+  if (std::fabs(det) > kIncircleBound * permanent) return det;
+  return incircleAdaptive(a, b, c, d, permanent);
 }
 
 PredicateStats predicateStats() {
   PredicateStats s;
   s.orientExact = gOrientExact.load(std::memory_order_relaxed);
   s.incircleExact = gIncircleExact.load(std::memory_order_relaxed);
+  s.orientFullExpansion = gOrientFull.load(std::memory_order_relaxed);
+  s.incircleFullExpansion = gIncircleFull.load(std::memory_order_relaxed);
   return s;
 }
 

@@ -2,8 +2,10 @@
 //
 // Method: J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric
 // Predicates", Discrete & Computational Geometry 18 (1997). A floating-point evaluation with a
-// forward error bound decides almost every case; when the bound cannot decide, the determinant is
-// evaluated exactly with expansion arithmetic (expansion.h). The sign returned is always exact for
+// forward error bound decides almost every case; when the bound cannot decide, the determinant of
+// the rounded coordinate differences is evaluated exactly (exact outright when no difference was
+// rounded, and decisive whenever it is not nearly zero), and only then the full determinant with
+// expansion arithmetic (expansion.h). The sign returned is always exact for
 // finite double inputs whose products do not overflow or underflow.
 #pragma once
 
@@ -19,11 +21,15 @@ double orient2d(Point2 a, Point2 b, Point2 c);
 // < 0 if strictly outside, 0 if the four points are co-circular.
 double incircle(Point2 a, Point2 b, Point2 c, Point2 d);
 
-// Counters for tests and benchmarks: how often the exact fallback ran (not thread-safe to read
-// while triangulating in another thread; relaxed atomics).
+// Counters for tests and benchmarks (not thread-safe to read while triangulating in another thread;
+// relaxed atomics): how often the filter could not decide and the exact fallback ran, and how many
+// of those needed the full expansion of the original coordinates (the rest were decided exactly
+// from the rounded differences).
 struct PredicateStats {
   unsigned long long orientExact = 0;
   unsigned long long incircleExact = 0;
+  unsigned long long orientFullExpansion = 0;
+  unsigned long long incircleFullExpansion = 0;
 };
 PredicateStats predicateStats();
 

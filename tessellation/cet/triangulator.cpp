@@ -29,6 +29,10 @@ namespace {
 
 std::string vertexName(VertexId v) { return std::to_string(v); }
 
+// The lowest and the highest set bit of a 3-bit edge mask.
+constexpr int kLowestEdge[8] = {-1, 0, 1, 0, 2, 0, 1, 0};
+constexpr int kHighestEdge[8] = {-1, 0, 1, 1, 2, 2, 2, 2};
+
 }  // namespace
 
 void Triangulator::reserve(std::size_t vertices) { mesh_.reserve(vertices, 2 * vertices + 8); }
@@ -45,15 +49,14 @@ VertexId Triangulator::representative(VertexId v) const {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Point location: a stochastic visibility walk. In a finite triangle, cross an edge (chosen from a
-// random start, skipping the one just crossed) whose line has the point strictly on its far side; a
-// ghost triangle (x, y, inf) contains the open half-plane left of x -> y, and points on the hull line
-// move along the hull to the ghost or edge that holds them. Terminates with probability 1 on any
-// triangulation, constrained or not.
+// Point location: a stochastic visibility walk. In a finite triangle, cross an edge whose line has
+// the point strictly on its far side (a random one of two such); a ghost triangle (x, y, inf)
+// contains the open half-plane left of x -> y, and points on the hull line move along the hull to
+// the ghost or edge that holds them. Terminates with probability 1 on any triangulation,
+// constrained or not.
 Triangulator::Location Triangulator::locate(Point2 p, TriangleId start) const {
   TriangleId t = start;
   if (t == kNoTriangle || t >= mesh_.triangleCount()) t = 0;
-  TriangleId previous = kNoTriangle;
   for (;;) {
     const int g = mesh_.ghostIndex(t);
     if (g >= 0) {
@@ -61,7 +64,6 @@ Triangulator::Location Triangulator::locate(Point2 p, TriangleId start) const {
       const Point2 x = mesh_.point(mesh_.vertex(t, ix)), y = mesh_.point(mesh_.vertex(t, iy));
       const double o = orient2d(x, y, p);
       if (o > 0.0) return Location{Location::Kind::kInTriangle, t, 0};
-      previous = t;
       if (o < 0.0) {
         t = mesh_.neighbor(t, g);
         continue;
@@ -73,24 +75,21 @@ Triangulator::Location Triangulator::locate(Point2 p, TriangleId start) const {
       t = strictlyBetween(x, p, y) ? mesh_.neighbor(t, ix) : mesh_.neighbor(t, iy);
       continue;
     }
-    walkSeed_ = walkSeed_ * 1664525u + 1013904223u;
-    const int r = static_cast<int>((walkSeed_ >> 16) % 3u);
-    int zeroMask = 0;
-    bool moved = false;
-    for (int k = 0; k < 3; ++k) {
-      const int i = (r + k) % 3;
-      const TriangleId n = mesh_.neighbor(t, i);
-      if (n == previous) continue;  // we came through it: the point is strictly on this side
-      const double o = orient2d(mesh_.point(mesh_.vertex(t, next3(i))), mesh_.point(mesh_.vertex(t, prev3(i))), p);
-      if (o < 0.0) {
-        previous = t;
-        t = n;
-        moved = true;
-        break;
-      }
-      if (o == 0.0) zeroMask |= 1 << i;
+    // All three edges at once: the tests are independent, so they overlap, and no branch depends on
+    // one of them. The edge just crossed has the point strictly inside (the exact sign is the
+    // opposite of the one that crossed it), so it is never chosen again.
+    Point2 q[3];
+    for (int i = 0; i < 3; ++i) q[i] = mesh_.point(mesh_.vertex(t, i));
+    int crossable = 0, zeroMask = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double o = orient2d(q[next3(i)], q[prev3(i)], p);
+      crossable |= (o < 0.0 ? 1 : 0) << i;
+      zeroMask |= (o == 0.0 ? 1 : 0) << i;
     }
-    if (moved) continue;
+    if (crossable != 0) {
+      t = mesh_.neighbor(t, chooseEdge(crossable));
+      continue;
+    }
     switch (zeroMask) {
       case 0: return Location{Location::Kind::kInTriangle, t, 0};
       case 1: return Location{Location::Kind::kOnEdge, t, 0};
@@ -141,6 +140,12 @@ bool Triangulator::buildFirstTriangle() {
 
 // Splits the located triangle or edge by vertex v (already in the vertex array) and restores the
 // constrained Delaunay property with Lawson's flips.
+// One of the (one or two) edges in the mask, at random when there are two.
+int Triangulator::chooseEdge(int mask) const {
+  walkSeed_ = walkSeed_ * 1664525u + 1013904223u;
+  return (walkSeed_ >> 31) != 0 ? kHighestEdge[mask] : kLowestEdge[mask];
+}
+
 InsertOutcome Triangulator::insertLocated(VertexId v, const Location& loc) {
   const SplitResult split = loc.kind == Location::Kind::kOnEdge ? mesh_.splitEdge(loc.t, loc.i, v)
                                                                  : mesh_.splitTriangle(loc.t, v);

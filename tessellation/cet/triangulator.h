@@ -113,6 +113,7 @@ class Triangulator {
  private:
   struct Location;
   Location locate(Point2 p, TriangleId start) const;
+  int chooseEdge(int mask) const;
   bool buildFirstTriangle();
   InsertOutcome insertLocated(VertexId v, const Location& loc);
   void legalizeEdges(std::vector<std::pair<VertexId, VertexId>>& stack);
