@@ -18,6 +18,7 @@
 #include "engine/context.h"
 #include "engine/image.h"
 #include "engine/renderer.h"
+#include "engine/warm_up.h"
 #include "model_scene.h"
 #include "progress_bar.h"
 #include "stream/progressive_stream.h"
@@ -134,6 +135,8 @@ int runRender(const RenderCli& cli) {
   if (!renderer) return fail(1, engineErrorLine(renderer.error()));
   session.renderer = std::move(*renderer);
   engine::Renderer& r = *session.renderer;
+  // lavapipe compiles the pipelines' code at their first draw: here, while level 0 is being made.
+  if (auto s = engine::warmUp(r); !s) return fail(1, engineErrorLine(s.error()));
 
   ModelScene link(model, r.scene());
   int next = cli.levels ? 0 : last;

@@ -12,6 +12,7 @@
 #include <glm/vec4.hpp>
 
 #include "engine/render_to_png.h"
+#include "engine/warm_up.h"
 #include "image_compare.h"
 #include "render_fixture.h"
 #include "test_meshes.h"
@@ -446,6 +447,32 @@ TEST_F(UpdateTest, RenderMeshToPngWritesTheSameImage) {
   Status bad = renderMeshToPng(cube(), options, "/nonexistent-dir/x.png");
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().code, ErrorCode::kIo);
+}
+
+
+// warmUp() draws its own small scene once and leaves nothing behind: the scene is empty afterwards
+// and a model drawn next looks exactly as on a renderer that was never warmed up.
+TEST_F(UpdateTest, WarmUpLeavesNoTrace) {
+  const MeshData mesh = cube(2.0f, 4);
+  RgbaImage cold, warm;
+  {
+    Renderer* r = load(mesh);
+    ASSERT_NE(r, nullptr);
+    cold = shot(*r, standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+    renderer_.reset();
+  }
+  Renderer* r = makeHeadless(kSize, kSize);
+  ASSERT_NE(r, nullptr);
+  const Status s = warmUp(*r);
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  EXPECT_EQ(r->scene().faceCount(), 0u);
+  EXPECT_EQ(r->scene().vertexCount(), 0u);
+  EXPECT_EQ(r->scene().instanceCount(), 0u);
+  auto part = addMesh(r->scene(), mesh);
+  ASSERT_TRUE(part.ok()) << part.error().message;
+  warm = shot(*r, standardView(StandardView::kIso, r->scene().bounds(), r->aspect()));
+  ASSERT_EQ(cold.pixels.size(), warm.pixels.size());
+  EXPECT_TRUE(cold.pixels == warm.pixels);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "brep/tessellator.h"
 #include "engine/context.h"
 #include "engine/renderer.h"
+#include "engine/warm_up.h"
 #include "model_scene.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
@@ -51,10 +52,15 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   row.brepmesh = reference.brepmesh_ms;
 
   // The window is open before a model loads: the renderer (and its pipelines, which lavapipe
-  // compiles when they are created) exists before the clock starts, as in the viewer.
+  // compiles when they are created and, for their machine code, at their first draw: warmUp())
+  // exists before the clock starts, as in the viewer once it has shown a model.
   auto renderer = engine::Renderer::createHeadless(device, {1280, 720});
   if (!renderer) {
     row.error = renderer.error().message;
+    return row;
+  }
+  if (auto warm = engine::warmUp(**renderer); !warm) {
+    row.error = warm.error().message;
     return row;
   }
   auto loaded = brep::loadModel(path);
