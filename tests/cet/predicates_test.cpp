@@ -53,6 +53,37 @@ TEST(Predicates, ExactlyCollinearAndCoCircularGiveZero) {
   EXPECT_LT(incircle({0, 0}, {1, 0}, {0, 1}, {2, 2}), 0.0);
 }
 
+TEST(Predicates, FullExpansionOnlyWhereDifferencesRound) {
+  // Exactly collinear / co-circular points the filter cannot decide: with small integer coordinates
+  // every difference is exact, and the stages before the full expansion decide (zero, exactly);
+  // with decimal coordinates the differences round and only the full expansion can tell.
+  const PredicateStats before = predicateStats();
+  EXPECT_EQ(orient2d({1, 1}, {2, 2}, {3, 3}), 0.0);
+  EXPECT_EQ(orient2d({-7, 3}, {1, -1}, {9, -5}), 0.0);
+  EXPECT_EQ(incircle({-3, 4}, {5, 0}, {0, 5}, {4, -3}), 0.0);
+  const PredicateStats exactDifferences = predicateStats();
+  EXPECT_GT(exactDifferences.orientExact, before.orientExact) << "the filter must not decide an exact zero";
+  EXPECT_GT(exactDifferences.incircleExact, before.incircleExact);
+  EXPECT_EQ(exactDifferences.orientFullExpansion, before.orientFullExpansion);
+  EXPECT_EQ(exactDifferences.incircleFullExpansion, before.incircleFullExpansion);
+
+  const Point2 a{0.1, 0.3}, b{0.7, 0.9}, c{1.3, 1.5};  // on y = x + 0.2 as written, not as rounded
+  EXPECT_EQ(sign(orient2d(a, b, c)), referenceOrient(a, b, c));
+  // Points of a circle about (0.3, 0.7), rounded: some differences round (no two coordinates within
+  // a factor of two of each other), and some quadruples are too nearly co-circular for stage B.
+  for (int k = 0; k < 64; ++k) {
+    Point2 q[4];
+    for (int i = 0; i < 4; ++i) {
+      const double t = 0.37 * k + 1.7 * i;
+      q[i] = {0.3 + 0.29 * std::cos(t), 0.7 + 0.29 * std::sin(t)};
+    }
+    EXPECT_EQ(sign(incircle(q[0], q[1], q[2], q[3])), referenceIncircle(q[0], q[1], q[2], q[3]));
+  }
+  const PredicateStats roundedDifferences = predicateStats();
+  EXPECT_GT(roundedDifferences.orientFullExpansion, exactDifferences.orientFullExpansion);
+  EXPECT_GT(roundedDifferences.incircleFullExpansion, exactDifferences.incircleFullExpansion);
+}
+
 TEST(Predicates, NearlyCoCircularOnRoundedCircles) {
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
