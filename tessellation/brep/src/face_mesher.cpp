@@ -83,7 +83,8 @@ gp_Pnt2d FaceMesher::boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) c
   if (!(gap > 0.05 * settings_.finalChordal)) return uv;
   double u = uv.X(), v = uv.Y();
   const double foot = eval_.project(p, u, v, 8);
-  // Only a nearby foot clearly better than the pcurve's point (no jump across the face).
+  // Only a foot clearly closer than the pcurve's point, and within half the face's parameter box of
+  // it (the pcurve may be parametrised quite differently from its edge, but not on another sheet).
   const double reach = 0.5 * std::max(eval_.uMax - eval_.uMin, eval_.vMax - eval_.vMin);
   if (foot < 0.5 * gap && std::abs(u - uv.X()) <= reach && std::abs(v - uv.Y()) <= reach) uv.SetCoord(u, v);
   return uv;
@@ -704,12 +705,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // as its apex, and the triangle they make on the chord is flipped as well, as long as the
       // chord itself: a cascade towards the boundary that no size test stops.
       const bool override = tooFar || (flipped && r->longest > level.chordal && !onChord(t));
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) {
-        TriangleRecord stuck = *r;
-        stuck.flags |= TriangleRecord::kStuck;
-        records_.store(t, stuck);
-        return;
-      }
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) return;
       if (kDebugRefine) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalCos, r->longest, r->flags, u, v);

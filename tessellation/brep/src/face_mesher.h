@@ -77,11 +77,11 @@ class FaceMesher {
   void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit, TriangleRecord& r) const;
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
+  bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
   // towards the opposite corner when needed; false when no safe point was found.
-  bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
   bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const;
   void buildChords(const FaceMesh& mesh);
   bool clearOfChords(double u, double v) const;
