@@ -12,7 +12,7 @@
 
 namespace cetview::brep {
 
-SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False) {
+SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False), elementary_(surface_) {
   geom_ = BRep_Tool::Surface(face);
   uPeriodic_ = surface_.IsUPeriodic();
   vPeriodic_ = surface_.IsVPeriodic();
@@ -23,30 +23,6 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
     uMin = std::max(su0_, -1e6), uMax = std::min(su1_, 1e6), vMin = std::max(sv0_, -1e6), vMax = std::min(sv1_, 1e6);
   }
   u0 = uMin, v0 = vMin;
-  type_ = surface_.GetType();
-  switch (type_) {  // the adaptor's elementary surfaces are placed by the face's location
-    case GeomAbs_Plane:
-      origin_ = surface_.Plane().Location(), axis_ = surface_.Plane().Axis().Direction();
-      break;
-    case GeomAbs_Cylinder:
-      origin_ = surface_.Cylinder().Location(), axis_ = surface_.Cylinder().Axis().Direction();
-      radius_ = surface_.Cylinder().Radius();
-      break;
-    case GeomAbs_Cone:
-      origin_ = surface_.Cone().Location(), axis_ = surface_.Cone().Axis().Direction();
-      radius_ = surface_.Cone().RefRadius();
-      cosA_ = std::cos(surface_.Cone().SemiAngle()), sinA_ = std::sin(surface_.Cone().SemiAngle());
-      break;
-    case GeomAbs_Sphere:
-      origin_ = surface_.Sphere().Location(), radius_ = surface_.Sphere().Radius();
-      break;
-    case GeomAbs_Torus:
-      origin_ = surface_.Torus().Location(), axis_ = surface_.Torus().Axis().Direction();
-      radius_ = surface_.Torus().MajorRadius(), minor_ = surface_.Torus().MinorRadius();
-      break;
-    default:
-      type_ = GeomAbs_OtherSurface;
-  }
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
   double lu = 0, lv = 0, ku = 0, kv = 0;
   int n = 0;
@@ -258,36 +234,10 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
   return d;
 }
 
-double SurfaceEval::elementaryDistance(const gp_Pnt& m) const {
-  const gp_XYZ w = m.XYZ() - origin_.XYZ();
-  const double along = w.Dot(axis_.XYZ());
-  const double radial = (w - along * axis_.XYZ()).Modulus();
-  switch (type_) {
-    case GeomAbs_Plane:
-      return std::abs(along);
-    case GeomAbs_Cylinder:
-      return std::abs(radial - radius_);
-    case GeomAbs_Cone:
-      // In the half plane through the axis: the generator rho = radius + along * tan(angle), and
-      // its mirror (the other nappe).
-      return std::min(std::abs((radial - radius_) * cosA_ - along * sinA_),
-                      std::abs((radial + radius_) * cosA_ + along * sinA_));
-    case GeomAbs_Sphere:
-      return std::abs(w.Modulus() - radius_);
-    case GeomAbs_Torus:
-      // The plane through the axis and m cuts the torus in two circles of the minor radius, about
-      // (+major, 0) and (-major, 0); both matter when the minor radius is the larger (a spindle torus).
-      return std::min(std::abs(std::hypot(radial - radius_, along) - minor_),
-                      std::abs(std::hypot(radial + radius_, along) - minor_));
-    default:
-      return -1;
-  }
-}
-
 double SurfaceEval::projectOnce(const gp_Pnt& m, double u, double v, double* start, double enough) const {
-  if (type_ != GeomAbs_OtherSurface) {
+  if (elementary_.valid()) {
     if (start) *start = point(u, v).Distance(m);
-    return elementaryDistance(m);
+    return elementary_(m);
   }
   bool clamped = false;
   return projectFrom(m, u, v, 3, start, clamped, 0.1, enough);

@@ -13,6 +13,7 @@
 #include <gp_Vec.hxx>
 
 #include "cet/types.h"
+#include "elementary_distance.h"
 
 namespace cetview::brep {
 
@@ -80,15 +81,7 @@ class SurfaceEval {
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
 
-  // Distance from m to an elementary surface (the whole surface, not only the face), or -1 when
-  // the surface is not elementary.
-  double elementaryDistance(const gp_Pnt& m) const;
-  GeomAbs_SurfaceType type_ = GeomAbs_OtherSurface;
-  gp_Pnt origin_;        // plane origin; axis point of cylinders, cones and tori; sphere centre
-  gp_Dir axis_;          // plane normal; axis of cylinders, cones and tori
-  double radius_ = 0;    // cylinder, sphere, torus major radius; cone radius at origin_
-  double minor_ = 0;     // torus minor radius
-  double cosA_ = 1, sinA_ = 0;  // cone semi-angle
+
 
   // One direction's scaling: x = x[k] + (t - t[k]) * slope[k] in span k (extended linearly past the
   // ends, repeated with the period when periodic). One span: x = (t - t[0]) * slope[0].
@@ -103,6 +96,7 @@ class SurfaceEval {
   Axis uAxis_, vAxis_;
 
   BRepAdaptor_Surface surface_;
+  ElementaryDistance elementary_;  // planes, cylinders, cones, spheres, tori
   Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
