@@ -58,24 +58,26 @@ struct Expansion {
   double sign() const { return n == 0 ? 0.0 : c[n - 1]; }
 };
 
-// The exact difference a - b of two doubles as an expansion.
-inline Expansion<2> difference(double a, double b) {
+// The expansion x + y of a rounded result x and its error y, zero components left out.
+inline Expansion<2> twoTerms(double x, double y) {
   Expansion<2> e;
-  double x, y;
-  twoDiff(a, b, x, y);
   if (y != 0.0) e.c[e.n++] = y;
   if (x != 0.0) e.c[e.n++] = x;
   return e;
 }
 
+// The exact difference a - b of two doubles as an expansion.
+inline Expansion<2> difference(double a, double b) {
+  double x, y;
+  twoDiff(a, b, x, y);
+  return twoTerms(x, y);
+}
+
 // The exact product a * b of two doubles as an expansion.
 inline Expansion<2> exactProduct(double a, double b) {
-  Expansion<2> e;
   double x, y;
   twoProduct(a, b, x, y);
-  if (y != 0.0) e.c[e.n++] = y;
-  if (x != 0.0) e.c[e.n++] = x;
-  return e;
+  return twoTerms(x, y);
 }
 
 // h = e + f with zero components removed; returns the length of h (at most en + fn). h must not

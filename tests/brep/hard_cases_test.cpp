@@ -133,17 +133,23 @@ TopoDS_Face bsplineSheet(const std::vector<double>& heights, const std::vector<d
   return BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
 }
 
+// The checks of checkAtSeveralDeflections, then the final level alone at 0.1% with its triangle
+// count printed (the count these sheets once ran away with).
+void checkSheet(const TopoDS_Face& face, const std::string& name) {
+  checkAtSeveralDeflections(face, name);
+  auto model = test::loadShape(face, name + "_count");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.001), test::finalLevelOnly());
+  ASSERT_TRUE(t);
+  std::printf("%s at 0.1%%: %zu triangles\n", name.c_str(), t->triangleCount(t->lastLevel()));
+}
+
 TEST(HardCases, CreasedBSpline) {
   // A corrugated sheet: degree 1 across the folds, so every interior v knot is a crease of about
   // 80 degrees. Corner normals differ across a crease however small the triangles: the angle test
   // must not split along it down to the minimum size (which took ~100x the triangles).
   const TopoDS_Face face = bsplineSheet({0, 8, 0, 8, 0, 8}, {0, 1, 2, 3, 4, 5});
-  checkAtSeveralDeflections(face, "creased_bspline");
-  auto model = test::loadShape(face, "creased_bspline_count");
-  ASSERT_TRUE(model);
-  auto t = test::tessellateAndCheck(*model, test::relative(0.001), test::finalLevelOnly());
-  ASSERT_TRUE(t);
-  std::printf("creased sheet at 0.1%%: %zu triangles\n", t->triangleCount(t->lastLevel()));
+  checkSheet(face, "creased_bspline");
 }
 
 TEST(HardCases, UnevenKnotSpans) {
@@ -152,12 +158,7 @@ TEST(HardCases, UnevenKnotSpans) {
   // Delaunay triangles across it are slivers in 3D (this took 2M triangles and 14 minutes, with
   // flipped ones); with a scale per span it is as wide as in 3D.
   const TopoDS_Face face = bsplineSheet({0, 0, 30, 30}, {0, 1, 1.0001, 2});
-  checkAtSeveralDeflections(face, "uneven_knots");
-  auto model = test::loadShape(face, "uneven_knots_count");
-  ASSERT_TRUE(model);
-  auto t = test::tessellateAndCheck(*model, test::relative(0.001), test::finalLevelOnly());
-  ASSERT_TRUE(t);
-  std::printf("uneven knots at 0.1%%: %zu triangles\n", t->triangleCount(t->lastLevel()));
+  checkSheet(face, "uneven_knots");
 }
 
 TEST(HardCases, PlateWithHundredHoles) {
