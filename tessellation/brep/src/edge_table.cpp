@@ -20,7 +20,6 @@
 
 #include "model_impl.h"
 #include "parallel.h"
-#include "surface_eval.h"
 
 namespace cetview::brep {
 namespace {
@@ -47,20 +46,10 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
   const std::size_t n = model.edgeShapes.size();
   info_.resize(n);
   levels_.resize(n);
+  faceScales_.resize(model.faceShapes.size());
   for (FaceId f = 0; f < model.faceShapes.size(); ++f) {
     const TopoDS_Face face = TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD));
     const PartId part = model.faces[f].part;
-    double su = 1, sv = 1, u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-    bool freeform = false;
-    try {
-      const SurfaceEval eval(face);
-      su = eval.su, sv = eval.sv, u0 = eval.uMin, u1 = eval.uMax, v0 = eval.vMin, v1 = eval.vMax;
-      const GeomAbs_SurfaceType type = eval.adaptor().GetType();
-      freeform = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere &&
-                 type != GeomAbs_Torus;
-    } catch (const Standard_Failure&) {
-      continue;  // no usable surface: the face falls back anyway
-    }
     for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
       const EdgeId e = model.edgeId(part, it.Current());
       if (e == UINT32_MAX) continue;
@@ -75,9 +64,8 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
       if (known || info_[e].faces.size() >= 2) continue;
       FaceUse use;
       use.face = face;
+      use.id = f;
       use.side = side;
-      use.su = su, use.sv = sv, use.uMin = u0, use.uMax = u1, use.vMin = v0, use.vMax = v1;
-      use.freeform = freeform;
       use.pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current().Oriented(TopAbs_FORWARD)), face, use.first, use.last);
       if (!use.pcurve.IsNull()) info_[e].faces.push_back(use);
     }
@@ -102,6 +90,16 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
     } catch (const Standard_Failure&) {
       info.broken = true;
     }
+  }
+}
+
+void EdgeTable::scalesSet() {
+  for (Info& info : info_) {
+    // A face without a usable surface falls back anyway; it does not guide its edges.
+    info.faces.erase(std::remove_if(info.faces.begin(), info.faces.end(),
+                                    [&](const FaceUse& use) { return !faceScales_[use.id].valid; }),
+                     info.faces.end());
+    for (FaceUse& use : info.faces) use.scale = faceScales_[use.id];
   }
 }
 
@@ -146,6 +144,15 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     std::vector<BRepAdaptor_Surface> surfaces;
     for (const FaceUse& use : info.faces) surfaces.emplace_back(use.face, Standard_False);
     const std::size_t uses = surfaces.size();
+    // Points along an edge fall in a new knot span of a B-spline face nearly every time: evaluated
+    // directly rather than through OpenCASCADE's per-span cache (bspline_direct.h).
+    auto d1 = [&](std::size_t k, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
+      if (const BSplineDirect* direct = info.faces[k].scale.direct.get()) {
+        direct->d1(u, v, p, du, dv);
+      } else {
+        surfaces[k].D1(u, v, p, du, dv);
+      }
+    };
     auto normalsAt = [&](double t, gp_Vec* n) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceUse& use = info.faces[k];
@@ -154,7 +161,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         const gp_Pnt2d uv = use.pcurve->Value(s);
         gp_Pnt p;
         gp_Vec du, dv;
-        surfaces[k].D1(uv.X(), uv.Y(), p, du, dv);
+        d1(k, uv.X(), uv.Y(), p, du, dv);
         n[k] = du.Crossed(dv);
         // At a pole one derivative is rounding noise: no normal to compare.
         if (n[k].Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude() || du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12)
@@ -170,25 +177,24 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         return info.last == info.first ? use.first : use.first + (t - info.first) / (info.last - info.first) * (use.last - use.first);
       };
       const gp_Pnt2d a = use.pcurve->Value(param(ta)), b = use.pcurve->Value(param(tb));
-      const double dx = (b.X() - a.X()) * use.su, dy = (b.Y() - a.Y()) * use.sv;
+      const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
       const double len = std::hypot(dx, dy);
       if (!(len > 0)) return 0.0;
       const double h = height * len * side;
-      const double au = 0.5 * (a.X() + b.X()) - h * dy / len / use.su;
-      const double av = 0.5 * (a.Y() + b.Y()) + h * dx / len / use.sv;
+      const double au = 0.5 * (a.X() + b.X()) - h * dy / len / use.scale.su;
+      const double av = 0.5 * (a.Y() + b.Y()) + h * dx / len / use.scale.sv;
       // Outside the face's parameter box the face is narrower than the triangle: its width, not
       // this segment, limits the triangles there.
-      if (au < use.uMin || au > use.uMax || av < use.vMin || av > use.vMax) return 0.0;
-      BRepAdaptor_Surface& s = surfaces[k];
+      if (au < use.scale.uMin || au > use.scale.uMax || av < use.scale.vMin || av > use.scale.vMax) return 0.0;
       gp_Pnt apex, c;
       gp_Vec du, dv, dua, dva, dub, dvb;
-      s.D1(au, av, apex, du, dv);
+      d1(k, au, av, apex, du, dv);
       const gp_Vec nApex = du.Crossed(dv);
-      s.D1((a.X() + b.X() + au) / 3, (a.Y() + b.Y() + av) / 3, c, du, dv);
+      d1(k, (a.X() + b.X() + au) / 3, (a.Y() + b.Y() + av) / 3, c, du, dv);
       const gp_Vec nc = du.Crossed(dv);
       gp_Pnt tmpA, tmpB;
-      s.D1(a.X(), a.Y(), tmpA, dua, dva);
-      s.D1(b.X(), b.Y(), tmpB, dub, dvb);
+      d1(k, a.X(), a.Y(), tmpA, dua, dva);
+      d1(k, b.X(), b.Y(), tmpB, dub, dvb);
       const gp_Vec na = dua.Crossed(dva), nb = dub.Crossed(dvb);
       double bad = 0;
       if (nc.Magnitude() > 0) {
@@ -202,7 +208,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // which the normal criterion above already covers.
     auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
       for (std::size_t k = 0; k < uses; ++k) {
-        if (!info.faces[k].freeform) continue;
+        if (!info.faces[k].scale.freeform) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
           if (standing(k, ta, tb, pa, pb, 0.866, side) > 1.0) return true;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <memory>
 #include <vector>
 
 #include <Geom2d_Curve.hxx>
@@ -12,6 +13,7 @@
 #include <gp_Pnt.hxx>
 
 #include "brep/tessellator.h"
+#include "bspline_direct.h"
 
 namespace cetview::brep {
 
@@ -24,7 +26,21 @@ struct EdgePoints {
 
 class EdgeTable {
  public:
+  // Gathers the edges and the faces using them; cheap (no surface is evaluated).
   EdgeTable(const ModelImpl& model, std::size_t levelCount);
+
+  // What the discretisation needs of a face's surface (SurfaceEval's scaling and parameter box).
+  struct FaceScale {
+    bool valid = false;          // false: the face has no usable surface and does not guide its edges
+    double su = 1, sv = 1;       // the face's UV scaling
+    double uMin = 0, uMax = 0, vMin = 0, vMax = 0;
+    bool freeform = false;       // B-spline, Bezier, offset, swept: bends unpredictably near the edge
+    std::shared_ptr<const BSplineDirect> direct;  // a B-spline face's direct evaluator (immutable, shared)
+  };
+  // Before the first discretise(): every face's scale (from any thread, one call per face), then
+  // scalesSet() once, from one thread.
+  void setFaceScale(FaceId face, const FaceScale& scale) { faceScales_[face] = scale; }
+  void scalesSet();
 
   // Discretises every non-degenerate edge for level k (after level k-1). Returns false if cancelled.
   bool discretise(int level, const Level& tolerance, unsigned threads, const std::atomic<bool>* cancel);
@@ -45,12 +61,11 @@ class EdgeTable {
   // face must be within the tolerances, or the interior refinement can only add slivers along it.
   struct FaceUse {
     TopoDS_Face face;  // FORWARD
+    FaceId id = 0;
     Handle(Geom2d_Curve) pcurve;
     double first = 0, last = 0;  // pcurve range
     int side = 1;                // the face lies left (+1) or right (-1) of the pcurve, or both (0: seam)
-    double su = 1, sv = 1;       // the face's UV scaling (SurfaceEval)
-    double uMin = 0, uMax = 0, vMin = 0, vMax = 0;
-    bool freeform = false;       // B-spline, Bezier, offset, swept: bends unpredictably near the edge
+    FaceScale scale;             // copied from faceScales_ by scalesSet()
   };
   struct Info {
     double first = 0, last = 0;
@@ -66,6 +81,7 @@ class EdgeTable {
   const ModelImpl& model_;
   std::vector<Info> info_;
   std::vector<std::vector<EdgePoints>> levels_;  // [edge][level], sized up front (no reallocation)
+  std::vector<FaceScale> faceScales_;             // [face]
 };
 
 }  // namespace cetview::brep

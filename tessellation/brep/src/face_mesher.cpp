@@ -49,8 +49,11 @@ bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && c
 
 }  // namespace
 
-FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings)
-    : topology_(std::move(topology)), settings_(settings), eval_(topology_.face) {
+FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings, std::unique_ptr<SurfaceEval> eval)
+    : topology_(std::move(topology)),
+      settings_(settings),
+      ownEval_(eval ? std::move(eval) : std::make_unique<SurfaceEval>(topology_.face)),
+      eval_(*ownEval_) {
   const GeomAbs_SurfaceType type = eval_.adaptor().GetType();
   // Ruled surfaces (planes, cylinders, cones) deviate from a triangle as a quadratic whose maximum
   // the centroid and edge midpoints catch; doubly curved ones can peak elsewhere in big triangles.

@@ -39,7 +39,8 @@ struct FaceMesherSettings {
 
 class FaceMesher {
  public:
-  FaceMesher(FaceTopology topology, const FaceMesherSettings& settings);
+  // `eval`: the face's surface evaluator if already made (null: the mesher makes its own).
+  FaceMesher(FaceTopology topology, const FaceMesherSettings& settings, std::unique_ptr<SurfaceEval> eval = nullptr);
 
   // Advances to level k (the previous level is k-1, or none). Appends the new vertices to `mesh` and
   // pushes level k's index array. Returns kCancelled (nothing pushed) when cancel is raised.
@@ -101,7 +102,8 @@ class FaceMesher {
 
   FaceTopology topology_;
   FaceMesherSettings settings_;
-  SurfaceEval eval_;
+  std::unique_ptr<SurfaceEval> ownEval_;
+  const SurfaceEval& eval_;
   std::unique_ptr<cet::Triangulator> cdt_;
   std::uint32_t base_ = 0;  // output id of triangulator vertex 0
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex

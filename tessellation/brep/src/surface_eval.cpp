@@ -7,13 +7,19 @@
 #include <BRep_Tool.hxx>
 #include <GeomLib.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 
 namespace cetview::brep {
 
-SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False), elementary_(surface_) {
-  geom_ = BRep_Tool::Surface(face);
+SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False), elementary_(surface_), face_(face) {
+  if (surface_.GetType() == GeomAbs_BSplineSurface) {
+    TopLoc_Location location;  // applied to the poles (BRep_Tool::Surface(face) would copy the surface)
+    Handle(Geom_Surface) basis = BRep_Tool::Surface(face, location);
+    while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis)) basis = trimmed->BasisSurface();
+    direct_ = BSplineDirect::create(Handle(Geom_BSplineSurface)::DownCast(basis), location.Transformation());
+  }
   uPeriodic_ = surface_.IsUPeriodic();
   vPeriodic_ = surface_.IsVPeriodic();
   su0_ = surface_.FirstUParameter(), su1_ = surface_.LastUParameter();
@@ -106,7 +112,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
 
 void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   if (surface_.GetType() != GeomAbs_BSplineSurface) return;
-  const Handle(Geom_BSplineSurface) bs = surface_.BSpline();
+  const Handle(Geom_BSplineSurface) bs = surface_.Surface().BSpline();  // unlocated: no copy (knots only)
   const int n = uDir ? bs->NbUKnots() : bs->NbVKnots();
   if (n < 3 || n > 2049) return;  // one span, or more than are worth sampling
   std::vector<double> knots(static_cast<std::size_t>(n));
@@ -125,9 +131,9 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
         gp_Pnt p;
         gp_Vec du, dv;
         if (uDir) {
-          surface_.D1(t, w, p, du, dv);
+          d1(t, w, p, du, dv);
         } else {
-          surface_.D1(w, t, p, du, dv);
+          d1(w, t, p, du, dv);
         }
         sum += (uDir ? du : dv).Magnitude();
       }
@@ -188,9 +194,33 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
   return false;
 }
 
+bool SurfaceEval::cached(double u, double v, int& iu, int& iv) const {
+  if (!direct_) return true;
+  iu = direct_->uSpan(u), iv = direct_->vSpan(v);
+  if (iu == cachedU_ && iv == cachedV_) return true;
+  if (iu != lastU_ || iv != lastV_) lastU_ = iu, lastV_ = iv, run_ = 0;
+  if (++run_ <= kDirectRun) return false;
+  cachedU_ = iu, cachedV_ = iv;  // a run of points in this span: the cache moves here
+  return true;
+}
+
+void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {
+  int iu = 0, iv = 0;
+  if (cached(u, v, iu, iv)) {
+    surface_.D1(u, v, p, du, dv);
+  } else {
+    direct_->d1(u, v, iu, iv, p, du, dv);
+  }
+}
+
+gp_Pnt SurfaceEval::point(double u, double v) const {
+  int iu = 0, iv = 0;
+  return cached(u, v, iu, iv) ? surface_.Value(u, v) : direct_->value(u, v, iu, iv);
+}
+
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;
-  surface_.D1(u, v, p, du, dv);
+  d1(u, v, p, du, dv);
   const gp_Vec c = du.Crossed(dv);
   const double m = c.Magnitude();
   // Regular where both derivatives are well away from zero against their typical lengths (at a pole
@@ -201,6 +231,7 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
     return true;
   }
   gp_Dir estimated;
+  if (geom_.IsNull()) geom_ = BRep_Tool::Surface(face_);  // located: a copy when the face has a location
   if (GeomLib::NormEstim(geom_, gp_Pnt2d(u, v), 1e-7, estimated) <= 1) {
     n = estimated;
     return false;
@@ -209,7 +240,7 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   const double um = 0.5 * (uMin + uMax), vm = 0.5 * (vMin + vMax);
   for (double f : {1e-6, 1e-4, 1e-2}) {
     gp_Pnt q;
-    surface_.D1(u + f * (um - u), v + f * (vm - v), q, du, dv);
+    d1(u + f * (um - u), v + f * (vm - v), q, du, dv);
     const gp_Vec c2 = du.Crossed(dv);
     if (c2.Magnitude() > 1e-300) {
       n = gp_Dir(c2);
@@ -249,7 +280,7 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
   gp_Vec du, dv;
   double best = 1e300, bu = u, bv = v;
   for (int it = 0; it <= maxIter; ++it) {
-    surface_.D1(u, v, s, du, dv);
+    d1(u, v, s, du, dv);
     const gp_Vec r(s, m);
     const double d = r.Magnitude();
     if (it == 0 && start) *start = d;
@@ -269,7 +300,7 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
     if (!uPeriodic_ && (u < su0_ || u > su1_)) u = std::clamp(u, su0_, su1_), clamped = true;
     if (!vPeriodic_ && (v < sv0_ || v > sv1_)) v = std::clamp(v, sv0_, sv1_), clamped = true;
     if (move < settle * d) {
-      const gp_Pnt s2 = surface_.Value(u, v);
+      const gp_Pnt s2 = point(u, v);
       const double d2 = s2.Distance(m);
       if (d2 < best) best = d2, bu = u, bv = v;
       break;

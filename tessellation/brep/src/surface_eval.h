@@ -13,6 +13,7 @@
 #include <gp_Vec.hxx>
 
 #include "cet/types.h"
+#include "bspline_direct.h"
 #include "elementary_distance.h"
 
 namespace cetview::brep {
@@ -22,12 +23,14 @@ class SurfaceEval {
   explicit SurfaceEval(const TopoDS_Face& face);
 
   const BRepAdaptor_Surface& adaptor() const { return surface_; }
+  // A B-spline face's direct evaluator (immutable: may be shared with other threads), or null.
+  const std::shared_ptr<const BSplineDirect>& direct() const { return direct_; }
 
   // Point and unit natural normal (Su x Sv) at (u, v). Returns false where the normal is not
   // defined by first derivatives (poles, apexes); the normal then comes from higher derivatives or
   // the neighbourhood, and may still be a poor choice for angle tests.
   bool pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
-  gp_Pnt point(double u, double v) const { return surface_.Value(u, v); }
+  gp_Pnt point(double u, double v) const;
 
   // Distance from m to the surface, by Gauss-Newton from (u, v) (updated to the foot point). Each
   // iterate is a surface point, so the result never underestimates the distance to the nearest
@@ -95,9 +98,21 @@ class SurfaceEval {
   void buildAxis(bool uDir, Axis& axis) const;
   Axis uAxis_, vAxis_;
 
+  // Evaluation: B-spline points outside OpenCASCADE's cached span go to a direct evaluator
+  // (bspline_direct.h) until kDirectRun of them in a row have fallen in one span: the cache then
+  // moves there (a rebuild costs about as much as that many direct evaluations more than cached ones).
+  static constexpr int kDirectRun = 8;
+  void d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const;
+  bool cached(double u, double v, int& iu, int& iv) const;  // false: evaluate directly in spans (iu, iv)
+  std::shared_ptr<const BSplineDirect> direct_;
+  mutable int cachedU_ = -1, cachedV_ = -1;  // the span pair OpenCASCADE's cache holds
+  mutable int lastU_ = -1, lastV_ = -1;      // the span pair of the last direct evaluation
+  mutable int run_ = 0;  // direct evaluations in a row in it
+
   BRepAdaptor_Surface surface_;
   ElementaryDistance elementary_;  // planes, cylinders, cones, spheres, tori
-  Handle(Geom_Surface) geom_;  // with the face's location applied (for normal estimation at poles)
+  TopoDS_Face face_;
+  mutable Handle(Geom_Surface) geom_;  // with the face's location applied, made when first needed (normals at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
   double meanLu_ = 0, meanLv_ = 0;                 // mean |Su|, |Sv| over the face

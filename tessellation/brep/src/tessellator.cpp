@@ -87,10 +87,42 @@ FaceReport Tessellator::report(FaceId face) const { return impl_->faces[face].re
 bool Tessellator::discretiseEdges(int level, unsigned threads, const std::atomic<bool>* cancel) {
   if (level != impl_->edgeLevel.load() + 1 || level > lastLevel()) return level <= impl_->edgeLevel.load();
   // Edges aim below the level's tolerance by the same margin as the faces' triangles.
+  if (!impl_->surfacesReady && !impl_->prepareSurfaces(threads, cancel)) return false;
   Level edgeTolerance = impl_->schedule[static_cast<std::size_t>(level)];
   edgeTolerance.chordal *= kDeviationMargin;
   if (!impl_->edges.discretise(level, edgeTolerance, threads, cancel)) return false;
   impl_->edgeLevel.store(level);
+  return true;
+}
+
+bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>* cancel) {
+  std::atomic<bool> cancelled{false};
+  parallelFor(faces.size(), threads, [&](std::size_t f, unsigned) {
+    if (cancelled.load(std::memory_order_relaxed) || faces[f].eval) return;
+    if (cancel && cancel->load(std::memory_order_relaxed)) {
+      cancelled = true;
+      return;
+    }
+    EdgeTable::FaceScale scale;
+    try {
+      const TopoDS_Face face = TopoDS::Face(model.impl().faceShapes[f].Oriented(TopAbs_FORWARD));
+      auto eval = std::make_unique<SurfaceEval>(face);
+      scale.su = eval->su, scale.sv = eval->sv;
+      scale.uMin = eval->uMin, scale.uMax = eval->uMax, scale.vMin = eval->vMin, scale.vMax = eval->vMax;
+      const GeomAbs_SurfaceType type = eval->adaptor().GetType();
+      scale.freeform = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone &&
+                       type != GeomAbs_Sphere && type != GeomAbs_Torus;
+      scale.direct = eval->direct();
+      scale.valid = true;
+      faces[f].eval = std::move(eval);
+    } catch (const Standard_Failure&) {
+      // No usable surface: the face's mesher fails the same way and the face falls back.
+    }
+    edges.setFaceScale(static_cast<FaceId>(f), scale);
+  });
+  if (cancelled) return false;
+  edges.scalesSet();
+  surfacesReady = true;
   return true;
 }
 
@@ -114,7 +146,7 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
         settings.finalAngle = t.angle;
         settings.coincident = 1e-10 * t.model.bounds().diagonal();
         settings.reversed = t.model.faces()[face].reversed;
-        s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings);
+        s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings, std::move(s.eval));
       }
       const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh,
                                                   s.report, cancel, k == lastLevel());

@@ -16,6 +16,7 @@ class TessellatorImpl {
   TessellatorImpl(const Model& model, double chordal, double angle, std::vector<Level> schedule);
 
   struct FaceState {
+    std::unique_ptr<SurfaceEval> eval;   // made with the edges' first level, handed to the mesher
     std::unique_ptr<FaceMesher> mesher;  // alive between levels, freed after the last one
     FaceMesh mesh;
     FaceReport report;
@@ -31,6 +32,12 @@ class TessellatorImpl {
   EdgeTable edges;
   std::atomic<int> edgeLevel{-1};
   std::vector<FaceState> faces;
+  bool surfacesReady = false;  // prepareSurfaces() has completed
+
+  // Every face's SurfaceEval, with `threads` threads, and the edges' face scales from them: the
+  // first level's edges need the scales, its faces the evaluators. Returns false when cancelled
+  // (faces done so far keep theirs; a later call completes the rest).
+  bool prepareSurfaces(unsigned threads, const std::atomic<bool>* cancel);
 
   // A face whose meshing threw (a bug or exhausted memory, never a property of the input that the
   // mesher knows how to report): its mesher is dropped, BRepMesh meshes it if it can (kFallback), else

@@ -1,0 +1,160 @@
+#include "bspline_direct.h"
+
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+#include <algorithm>
+
+namespace cetview::brep {
+
+std::unique_ptr<BSplineDirect> BSplineDirect::create(const Handle(Geom_BSplineSurface)& s, const gp_Trsf& placement) {
+  if (s.IsNull() || s->IsUPeriodic() || s->IsVPeriodic()) return nullptr;
+  if (s->UDegree() < 1 || s->VDegree() < 1 || s->UDegree() > kMaxDegree || s->VDegree() > kMaxDegree) return nullptr;
+  std::unique_ptr<BSplineDirect> d(new BSplineDirect);
+  d->u_.degree = s->UDegree(), d->v_.degree = s->VDegree();
+  d->u_.poles = s->NbUPoles(), d->v_.poles = s->NbVPoles();
+  d->rational_ = s->IsURational() || s->IsVRational();
+  auto flat = [](const TColStd_Array1OfReal& k, Direction& out) {
+    out.knots.resize(static_cast<std::size_t>(k.Length()));
+    for (int i = k.Lower(); i <= k.Upper(); ++i) out.knots[static_cast<std::size_t>(i - k.Lower())] = k(i);
+    // A non-periodic B-spline has poles + degree + 1 flat knots.
+    if (out.knots.size() != static_cast<std::size_t>(out.poles + out.degree + 1)) return false;
+    out.index();
+    return true;
+  };
+  if (!flat(s->UKnotSequence(), d->u_) || !flat(s->VKnotSequence(), d->v_)) return nullptr;
+  const TColgp_Array2OfPnt& poles = s->Poles();
+  const TColStd_Array2OfReal* weights = s->Weights();
+  d->poles_.resize(4 * static_cast<std::size_t>(d->u_.poles) * static_cast<std::size_t>(d->v_.poles));
+  double* out = d->poles_.data();
+  for (int i = 1; i <= d->u_.poles; ++i) {
+    for (int j = 1; j <= d->v_.poles; ++j, out += 4) {
+      // An affine map of the poles maps the surface (weights unchanged).
+      const gp_Pnt p = poles(poles.LowerRow() + i - 1, poles.LowerCol() + j - 1).Transformed(placement);
+      const double w = d->rational_ && weights ? (*weights)(weights->LowerRow() + i - 1, weights->LowerCol() + j - 1) : 1.0;
+      out[0] = p.X() * w, out[1] = p.Y() * w, out[2] = p.Z() * w, out[3] = w;
+    }
+  }
+  return d;
+}
+
+void BSplineDirect::Direction::index() {
+  const int first = degree, last = poles - 1;  // spans
+  const double a = knots[static_cast<std::size_t>(first)], b = knots[static_cast<std::size_t>(last + 1)];
+  const int buckets = 2 * (last - first + 1);
+  t0 = a;
+  perBucket = b > a ? buckets / (b - a) : 0.0;
+  bucketSpan.assign(static_cast<std::size_t>(buckets), first);
+  int s = first;
+  for (int i = 0; i < buckets; ++i) {
+    const double start = a + i / perBucket;
+    while (s < last && knots[static_cast<std::size_t>(s + 1)] <= start) ++s;
+    bucketSpan[static_cast<std::size_t>(i)] = s;
+  }
+}
+
+int BSplineDirect::Direction::span(double t) const {
+  // The largest span s with knots[s] <= t, kept within degree .. poles - 1.
+  const int last = poles - 1;
+  if (!(t > t0)) return degree;
+  const double x = (t - t0) * perBucket;
+  int s = x < static_cast<double>(bucketSpan.size()) ? bucketSpan[static_cast<std::size_t>(x)] : last;
+  // A bucket's start may round to either side of a knot: step back, then forward.
+  while (s > degree && knots[static_cast<std::size_t>(s)] > t) --s;
+  while (s < last && knots[static_cast<std::size_t>(s + 1)] <= t) ++s;
+  return s;
+}
+
+void BSplineDirect::Direction::basis(int s, double t, double* N, double* dN) const {
+  const std::vector<double>& U = knots;
+  const int p = degree;
+  // Cox-de Boor, one degree at a time (The NURBS Book's triangular scheme). Before the last round N
+  // holds the degree p - 1 functions, from which the derivatives follow:
+  //   N'_{i,p} = p (N_{i,p-1} / (U[i+p] - U[i]) - N_{i+1,p-1} / (U[i+p+1] - U[i+1])).
+  double left[kMaxDegree + 1], right[kMaxDegree + 1];
+  N[0] = 1.0;
+  for (int j = 1; j <= p; ++j) {
+    left[j] = t - U[static_cast<std::size_t>(s + 1 - j)];
+    right[j] = U[static_cast<std::size_t>(s + j)] - t;
+    if (j == p && dN) {
+      // N[0..p-1] are N_{s-p+1+k, p-1}; function r of degree p is N_{s-p+r, p}.
+      for (int r = 0; r <= p; ++r) {
+        double value = 0;
+        if (r > 0) {
+          const double span = U[static_cast<std::size_t>(s + r)] - U[static_cast<std::size_t>(s - p + r)];
+          if (span > 0) value += N[r - 1] / span;
+        }
+        if (r < p) {
+          const double span = U[static_cast<std::size_t>(s + r + 1)] - U[static_cast<std::size_t>(s - p + r + 1)];
+          if (span > 0) value -= N[r] / span;
+        }
+        dN[r] = p * value;
+      }
+    }
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      const double denominator = right[r + 1] + left[j - r];
+      const double temp = denominator != 0.0 ? N[r] / denominator : 0.0;
+      N[r] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    N[j] = saved;
+  }
+}
+
+template <bool kDerivatives>
+void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {
+  // out: the homogeneous point (4), and with derivatives its u (4) and v (4) derivatives.
+  double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNu[kMaxDegree + 1], dNv[kMaxDegree + 1];
+  u_.basis(su, u, Nu, kDerivatives ? dNu : nullptr);
+  v_.basis(sv, v, Nv, kDerivatives ? dNv : nullptr);
+  const int uDegree = u_.degree, vDegree = v_.degree;
+  double s[4] = {0, 0, 0, 0}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
+  const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
+  const double* base = poles_.data() + static_cast<std::size_t>(su - uDegree) * rowStride +
+                       4 * static_cast<std::size_t>(sv - vDegree);
+  for (int r = 0; r <= uDegree; ++r) {
+    const double* row = base + static_cast<std::size_t>(r) * rowStride;
+    double a[4] = {0, 0, 0, 0}, b[4] = {0, 0, 0, 0};
+    for (int c = 0; c <= vDegree; ++c) {
+      const double* q = row + 4 * c;
+      for (int k = 0; k < 4; ++k) a[k] += Nv[c] * q[k];
+      if (kDerivatives)
+        for (int k = 0; k < 4; ++k) b[k] += dNv[c] * q[k];
+    }
+    for (int k = 0; k < 4; ++k) s[k] += Nu[r] * a[k];
+    if (kDerivatives) {
+      for (int k = 0; k < 4; ++k) su4[k] += dNu[r] * a[k], sv4[k] += Nu[r] * b[k];
+    }
+  }
+  for (int k = 0; k < 4; ++k) out[k] = s[k];
+  if (kDerivatives)
+    for (int k = 0; k < 4; ++k) out[4 + k] = su4[k], out[8 + k] = sv4[k];
+}
+
+gp_Pnt BSplineDirect::value(double u, double v, int su, int sv) const {
+  double h[4];
+  evaluate<false>(u, v, su, sv, h);
+  if (!rational_) return gp_Pnt(h[0], h[1], h[2]);
+  return gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
+}
+
+void BSplineDirect::d1(double u, double v, int su, int sv, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {
+  double h[12];
+  evaluate<true>(u, v, su, sv, h);
+  if (!rational_) {
+    p.SetCoord(h[0], h[1], h[2]);
+    du.SetCoord(h[4], h[5], h[6]);
+    dv.SetCoord(h[8], h[9], h[10]);
+    return;
+  }
+  // S = A / w: S' = (A' - w' S) / w.
+  const double w = h[3];
+  const gp_XYZ s(h[0] / w, h[1] / w, h[2] / w);
+  p.SetXYZ(s);
+  du.SetXYZ((gp_XYZ(h[4], h[5], h[6]) - h[7] * s) / w);
+  dv.SetXYZ((gp_XYZ(h[8], h[9], h[10]) - h[11] * s) / w);
+}
+
+}  // namespace cetview::brep

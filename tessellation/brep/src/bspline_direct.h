@@ -1,0 +1,67 @@
+// Direct evaluation of a (non-periodic) B-spline surface from its poles: the basis functions of
+// the two knot spans are computed per call (Cox-de Boor's triangular scheme), nothing is cached.
+//
+// OpenCASCADE evaluates a B-spline through a per-span cache: the span's polynomial coefficients,
+// rebuilt whenever a point falls in another span than the last one. That pays off for points
+// clustered in one span and costs several times a direct evaluation for scattered ones: the coarse
+// levels of a face with thousands of spans (occ/terrain.brep: 309 x 320 bicubic spans) ask nearly
+// every point in a new span. SurfaceEval uses this for points outside the cached span and leaves
+// runs of points inside one span to OpenCASCADE (see SpanRouting).
+#pragma once
+
+#include <Geom_BSplineSurface.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Trsf.hxx>
+#include <gp_Vec.hxx>
+
+#include <memory>
+#include <vector>
+
+namespace cetview::brep {
+
+class BSplineDirect {
+ public:
+  // The surface moved by `placement` (a face's location). Null for a periodic surface (its poles
+  // wrap around) or a degree beyond kMaxDegree.
+  static std::unique_ptr<BSplineDirect> create(const Handle(Geom_BSplineSurface)& surface,
+                                               const gp_Trsf& placement = gp_Trsf());
+
+  static constexpr int kMaxDegree = 25;  // OpenCASCADE's own limit
+
+  // Index of the knot span holding the parameter (the first span for parameters before it, the
+  // last for those past it: they are evaluated on its polynomial, as OpenCASCADE does). Spans are
+  // indices into the flat knot sequence: degree .. poles - 1.
+  int uSpan(double u) const { return u_.span(u); }
+  int vSpan(double v) const { return v_.span(v); }
+
+  // At (u, v) in spans (su, sv) as uSpan(u), vSpan(v) give them.
+  gp_Pnt value(double u, double v, int su, int sv) const;
+  void d1(double u, double v, int su, int sv, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const;
+  gp_Pnt value(double u, double v) const { return value(u, v, uSpan(u), vSpan(v)); }
+  void d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const { d1(u, v, uSpan(u), vSpan(v), p, du, dv); }
+
+ private:
+  // One direction: its flat knot sequence (each knot repeated by its multiplicity) and a table of
+  // uniform buckets over the parameter range, each naming the span its start lies in, so a span is
+  // found in a step or two instead of a binary search.
+  struct Direction {
+    int degree = 0, poles = 0;
+    std::vector<double> knots;
+    double t0 = 0, perBucket = 0;
+    std::vector<int> bucketSpan;
+    void index();
+    int span(double t) const;
+    // Basis functions N[0..degree] of span s at t, and their first derivatives dN (when not null).
+    void basis(int s, double t, double* N, double* dN) const;
+  };
+  BSplineDirect() = default;
+  template <bool kDerivatives>
+  void evaluate(double u, double v, int su, int sv, double* out) const;
+
+  Direction u_, v_;
+  bool rational_ = false;
+  // Poles row by row (u index major): x, y, z and the weight (rational: x w, y w, z w, w).
+  std::vector<double> poles_;
+};
+
+}  // namespace cetview::brep

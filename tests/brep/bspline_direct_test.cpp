@@ -1,0 +1,151 @@
+// BSplineDirect (tessellation/brep/src), the refinement's cache-free B-spline evaluator, against
+// OpenCASCADE's own evaluation (Geom_BSplineSurface::D1) on random surfaces: degrees 1 to 5 in
+// each direction, uneven knots with interior multiplicities (down to C0), rational and polynomial,
+// at parameters inside, on knots and a little outside the range (where both extend the end span's
+// polynomial), and with a placement (a face's location) applied to the poles.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
+
+#include "bspline_direct.h"
+
+namespace cetview::brep {
+namespace {
+
+// Knots 0 < ... < spans with random spacing; interior multiplicities from `mults` (cycled, capped at
+// the degree), end multiplicities degree + 1.
+void makeKnots(std::mt19937& rng, int degree, int spans, std::vector<int> mults, TColStd_Array1OfReal& knots,
+               TColStd_Array1OfInteger& multiplicities, int& poles) {
+  std::uniform_real_distribution<double> step(0.2, 3.0);
+  knots.Resize(1, spans + 1, false);
+  multiplicities.Resize(1, spans + 1, false);
+  double t = -1.5;
+  poles = 0;
+  for (int i = 1; i <= spans + 1; ++i) {
+    knots(i) = t;
+    t += step(rng);
+    const int m = i == 1 || i == spans + 1 ? degree + 1 : std::min(degree, mults[std::size_t(i) % mults.size()]);
+    multiplicities(i) = m;
+    poles += m;
+  }
+  poles -= degree + 1;
+}
+
+Handle(Geom_BSplineSurface) randomSurface(std::mt19937& rng, int uDegree, int vDegree, bool rational,
+                                          const std::vector<int>& mults) {
+  TColStd_Array1OfReal uKnots(1, 2), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, 2), vMults(1, 2);
+  int nu = 0, nv = 0;
+  makeKnots(rng, uDegree, 7, mults, uKnots, uMults, nu);
+  makeKnots(rng, vDegree, 5, mults, vKnots, vMults, nv);
+  std::uniform_real_distribution<double> jitter(-0.7, 0.7), weight(0.3, 3.0);
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  TColStd_Array2OfReal weights(1, nu, 1, nv);
+  for (int i = 1; i <= nu; ++i) {
+    for (int j = 1; j <= nv; ++j) {
+      poles(i, j) = gp_Pnt(i + jitter(rng), j + jitter(rng), 2 * jitter(rng));
+      weights(i, j) = rational ? weight(rng) : 1.0;
+    }
+  }
+  if (rational) return new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, uDegree, vDegree);
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, uDegree, vDegree);
+}
+
+void expectSame(const Handle(Geom_BSplineSurface)& s, std::mt19937& rng) {
+  const auto direct = BSplineDirect::create(s);
+  ASSERT_NE(direct, nullptr);
+  double u0, u1, v0, v1;
+  s->Bounds(u0, u1, v0, v1);
+  std::uniform_real_distribution<double> u(u0 - 0.05 * (u1 - u0), u1 + 0.05 * (u1 - u0));
+  std::uniform_real_distribution<double> v(v0 - 0.05 * (v1 - v0), v1 + 0.05 * (v1 - v0));
+  std::vector<std::pair<double, double>> params;
+  for (int i = 0; i < 300; ++i) params.emplace_back(u(rng), v(rng));
+  for (int i = 1; i <= s->NbUKnots(); ++i)  // exactly on knots, where spans meet
+    for (int j = 1; j <= s->NbVKnots(); ++j) params.emplace_back(s->UKnot(i), s->VKnot(j));
+  for (const auto& [pu, pv] : params) {
+    gp_Pnt p, q;
+    gp_Vec du, dv, eu, ev;
+    s->D1(pu, pv, p, du, dv);
+    direct->d1(pu, pv, q, eu, ev);
+    const double scale = 1.0 + du.Magnitude() + dv.Magnitude();
+    EXPECT_NEAR(p.Distance(q), 0.0, 1e-9) << "at (" << pu << ", " << pv << ")";
+    EXPECT_NEAR(p.Distance(direct->value(pu, pv)), 0.0, 1e-9);
+    // One-sided derivatives at a C0 knot differ: OpenCASCADE takes the span starting there, and so
+    // must the direct evaluator.
+    EXPECT_NEAR((du - eu).Magnitude(), 0.0, 1e-9 * scale) << "Su at (" << pu << ", " << pv << ")";
+    EXPECT_NEAR((dv - ev).Magnitude(), 0.0, 1e-9 * scale) << "Sv at (" << pu << ", " << pv << ")";
+  }
+}
+
+TEST(BSplineDirect, MatchesOpenCascadeOnPolynomialAndRationalSurfaces) {
+  std::mt19937 rng(11);
+  for (int uDegree = 1; uDegree <= 5; ++uDegree) {
+    for (int vDegree = 1; vDegree <= 5; vDegree += 2) {
+      for (const bool rational : {false, true}) {
+        SCOPED_TRACE(testing::Message() << "degrees " << uDegree << " x " << vDegree << (rational ? " rational" : ""));
+        expectSame(randomSurface(rng, uDegree, vDegree, rational, {1}), rng);
+        expectSame(randomSurface(rng, uDegree, vDegree, rational, {1, 2, 5, 1}), rng);  // C0 where m = degree
+      }
+    }
+  }
+}
+
+TEST(BSplineDirect, SpansFollowTheKnots) {
+  std::mt19937 rng(3);
+  const auto s = randomSurface(rng, 3, 2, false, {1});
+  const auto direct = BSplineDirect::create(s);
+  ASSERT_NE(direct, nullptr);
+  // Flat index of knot i's first copy: degree + 1 copies of the first knot, one of each interior.
+  for (int i = 1; i < s->NbUKnots(); ++i) {
+    const double mid = 0.5 * (s->UKnot(i) + s->UKnot(i + 1));
+    EXPECT_EQ(direct->uSpan(mid), 3 + i - 1);
+    EXPECT_EQ(direct->uSpan(s->UKnot(i)), 3 + i - 1);  // a knot starts its span
+  }
+  EXPECT_EQ(direct->uSpan(s->UKnot(1) - 10), 3);                    // before: the first span
+  EXPECT_EQ(direct->uSpan(s->UKnot(s->NbUKnots()) + 10), 3 + s->NbUKnots() - 2);  // past: the last
+  EXPECT_EQ(direct->uSpan(s->UKnot(s->NbUKnots())), 3 + s->NbUKnots() - 2);  // the end knot: the last
+}
+
+TEST(BSplineDirect, FollowsThePlacement) {
+  // A face's location moves its surface: the evaluator takes it on the poles.
+  std::mt19937 rng(5);
+  const auto s = randomSurface(rng, 3, 2, true, {1, 2});
+  gp_Trsf placement;
+  placement.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(1, 1, 0)), 0.7);
+  placement.SetTranslationPart(gp_Vec(-4, 5, 0.5));
+  const auto direct = BSplineDirect::create(s, placement);
+  ASSERT_NE(direct, nullptr);
+  const Handle(Geom_BSplineSurface) moved = Handle(Geom_BSplineSurface)::DownCast(s->Transformed(placement));
+  double u0, u1, v0, v1;
+  s->Bounds(u0, u1, v0, v1);
+  for (int i = 0; i <= 10; ++i) {
+    for (int j = 0; j <= 10; ++j) {
+      const double u = u0 + (u1 - u0) * i / 10, v = v0 + (v1 - v0) * j / 10;
+      gp_Pnt p, q;
+      gp_Vec du, dv, eu, ev;
+      moved->D1(u, v, p, du, dv);
+      direct->d1(u, v, q, eu, ev);
+      EXPECT_NEAR(p.Distance(q), 0.0, 1e-9);
+      EXPECT_NEAR((du - eu).Magnitude(), 0.0, 1e-9 * (1 + du.Magnitude()));
+      EXPECT_NEAR((dv - ev).Magnitude(), 0.0, 1e-9 * (1 + dv.Magnitude()));
+    }
+  }
+}
+
+TEST(BSplineDirect, DeclinesPeriodicSurfaces) {
+  std::mt19937 rng(7);
+  Handle(Geom_BSplineSurface) s = randomSurface(rng, 3, 3, false, {1});
+  s->SetUPeriodic();
+  EXPECT_EQ(BSplineDirect::create(s), nullptr);
+}
+
+}  // namespace
+}  // namespace cetview::brep
