@@ -41,6 +41,17 @@ std::unique_ptr<BSplineDirect> BSplineDirect::create(const Handle(Geom_BSplineSu
 
 void BSplineDirect::Direction::index() {
   const int first = degree, last = poles - 1;  // spans
+  const int perSpan = degree * (degree + 1) / 2;
+  inverse.assign(static_cast<std::size_t>((last - first + 1) * perSpan), 0.0);
+  for (int s = first; s <= last; ++s) {
+    double* inv = inverse.data() + (s - first) * perSpan;
+    for (int j = 1; j <= degree; ++j) {
+      for (int r = 0; r < j; ++r) {
+        const double d = knots[static_cast<std::size_t>(s + r + 1)] - knots[static_cast<std::size_t>(s + r + 1 - j)];
+        inv[j * (j - 1) / 2 + r] = d > 0 ? 1.0 / d : 0.0;
+      }
+    }
+  }
   const double a = knots[static_cast<std::size_t>(first)], b = knots[static_cast<std::size_t>(last + 1)];
   const int buckets = 2 * (last - first + 1);
   t0 = a;
@@ -66,36 +77,33 @@ int BSplineDirect::Direction::span(double t) const {
   return s;
 }
 
-void BSplineDirect::Direction::basis(int s, double t, double* N, double* dN) const {
-  const std::vector<double>& U = knots;
-  const int p = degree;
-  // Cox-de Boor, one degree at a time (The NURBS Book's triangular scheme). Before the last round N
-  // holds the degree p - 1 functions, from which the derivatives follow:
-  //   N'_{i,p} = p (N_{i,p-1} / (U[i+p] - U[i]) - N_{i+1,p-1} / (U[i+p+1] - U[i+1])).
-  double left[kMaxDegree + 1], right[kMaxDegree + 1];
+namespace {
+
+// Cox-de Boor, one degree at a time (The NURBS Book's triangular scheme), for the basis functions
+// N[0..p] of a span at t (N[r] is N_{s-p+r, p}) and, when dN is not null, their first derivatives.
+// The scheme divides by differences of knots only (round j, term r: U[s+r+1] - U[s+r+1-j]), so
+// `inverse` holds their reciprocals for the span, j = 1..p, r = 0..j-1 (0 for coincident knots).
+// Before the last round N holds the degree p - 1 functions, from which the derivatives follow:
+//   N'_{i,p} = p (N_{i,p-1} / (U[i+p] - U[i]) - N_{i+1,p-1} / (U[i+p+1] - U[i+1])),
+// whose knot differences are those of the last round.
+// P > 0 fixes the degree at compile time (unrolled loops); P == 0 takes it from `degree`.
+template <int P>
+void basis(const double* U, const double* inverse, int degree, int s, double t, double* N, double* dN) {
+  const int p = P > 0 ? P : degree;
+  double left[BSplineDirect::kMaxDegree + 1], right[BSplineDirect::kMaxDegree + 1];
   N[0] = 1.0;
   for (int j = 1; j <= p; ++j) {
-    left[j] = t - U[static_cast<std::size_t>(s + 1 - j)];
-    right[j] = U[static_cast<std::size_t>(s + j)] - t;
+    left[j] = t - U[s + 1 - j];
+    right[j] = U[s + j] - t;
+    const double* inv = inverse + j * (j - 1) / 2;
     if (j == p && dN) {
-      // N[0..p-1] are N_{s-p+1+k, p-1}; function r of degree p is N_{s-p+r, p}.
-      for (int r = 0; r <= p; ++r) {
-        double value = 0;
-        if (r > 0) {
-          const double span = U[static_cast<std::size_t>(s + r)] - U[static_cast<std::size_t>(s - p + r)];
-          if (span > 0) value += N[r - 1] / span;
-        }
-        if (r < p) {
-          const double span = U[static_cast<std::size_t>(s + r + 1)] - U[static_cast<std::size_t>(s - p + r + 1)];
-          if (span > 0) value -= N[r] / span;
-        }
-        dN[r] = p * value;
-      }
+      dN[0] = -p * N[0] * inv[0];
+      for (int r = 1; r < p; ++r) dN[r] = p * (N[r - 1] * inv[r - 1] - N[r] * inv[r]);
+      dN[p] = p * N[p - 1] * inv[p - 1];
     }
     double saved = 0.0;
     for (int r = 0; r < j; ++r) {
-      const double denominator = right[r + 1] + left[j - r];
-      const double temp = denominator != 0.0 ? N[r] / denominator : 0.0;
+      const double temp = N[r] * inv[r];
       N[r] = saved + right[r + 1] * temp;
       saved = left[j - r] * temp;
     }
@@ -103,13 +111,15 @@ void BSplineDirect::Direction::basis(int s, double t, double* N, double* dN) con
   }
 }
 
-template <bool kDerivatives>
+}  // namespace
+
+template <bool kDerivatives, int PU, int PV>
 void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {
   // out: the homogeneous point (4), and with derivatives its u (4) and v (4) derivatives.
   double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNu[kMaxDegree + 1], dNv[kMaxDegree + 1];
-  u_.basis(su, u, Nu, kDerivatives ? dNu : nullptr);
-  v_.basis(sv, v, Nv, kDerivatives ? dNv : nullptr);
-  const int uDegree = u_.degree, vDegree = v_.degree;
+  basis<PU>(u_.knots.data(), u_.inverses(su), u_.degree, su, u, Nu, kDerivatives ? dNu : nullptr);
+  basis<PV>(v_.knots.data(), v_.inverses(sv), v_.degree, sv, v, Nv, kDerivatives ? dNv : nullptr);
+  const int uDegree = PU > 0 ? PU : u_.degree, vDegree = PV > 0 ? PV : v_.degree;
   double s[4] = {0, 0, 0, 0}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
   const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
   const double* base = poles_.data() + static_cast<std::size_t>(su - uDegree) * rowStride +
@@ -131,6 +141,16 @@ void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) co
   for (int k = 0; k < 4; ++k) out[k] = s[k];
   if (kDerivatives)
     for (int k = 0; k < 4; ++k) out[4 + k] = su4[k], out[8 + k] = sv4[k];
+}
+
+template <bool kDerivatives>
+void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {
+  // Bicubic patches are the common case: their loops unrolled.
+  if (u_.degree == 3 && v_.degree == 3) {
+    evaluate<kDerivatives, 3, 3>(u, v, su, sv, out);
+  } else {
+    evaluate<kDerivatives, 0, 0>(u, v, su, sv, out);
+  }
 }
 
 gp_Pnt BSplineDirect::value(double u, double v, int su, int sv) const {

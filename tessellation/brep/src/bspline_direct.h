@@ -51,11 +51,14 @@ class BSplineDirect {
     std::vector<int> bucketSpan;
     void index();
     int span(double t) const;
-    // Basis functions N[0..degree] of span s at t, and their first derivatives dN (when not null).
-    void basis(int s, double t, double* N, double* dN) const;
+    // Per span: reciprocals of the knot differences its basis functions divide by (see basis()).
+    std::vector<double> inverse;
+    const double* inverses(int s) const { return inverse.data() + (s - degree) * (degree * (degree + 1) / 2); }
   };
   BSplineDirect() = default;
   template <bool kDerivatives>
+  void evaluate(double u, double v, int su, int sv, double* out) const;
+  template <bool kDerivatives, int PU, int PV>  // degrees fixed at compile time, or 0
   void evaluate(double u, double v, int su, int sv, double* out) const;
 
   Direction u_, v_;
