@@ -594,9 +594,17 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
       const double third[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       eval_.blend(3, third, cu, cv, tu[0], tv[0]);
     }
+    // Free-edge midpoints, except on an edge far shorter than the triangle: its midpoint would all
+    // but repeat a corner, leaving t as it was (and t would ask again, pass after pass).
+    double length[3], longest = 0;
+    for (int i = 0; i < 3; ++i) {
+      const cet::Point2 a = cdt_->point(m.vertex(t, (i + 1) % 3)), b = cdt_->point(m.vertex(t, (i + 2) % 3));
+      length[i] = std::hypot(a.x - b.x, a.y - b.y);
+      longest = std::max(longest, length[i]);
+    }
     int n = 1;
     for (int i = 0; i < 3; ++i) {
-      if (m.isConstrained(t, i)) continue;
+      if (m.isConstrained(t, i) || length[i] < 1e-3 * longest) continue;
       tu[n] = 0.5 * (cu[(i + 1) % 3] + cu[(i + 2) % 3]), tv[n] = 0.5 * (cv[(i + 1) % 3] + cv[(i + 2) % 3]);
       if (!eval_.linear()) {
         const double half[2] = {0.5, 0.5}, eu[2] = {cu[(i + 1) % 3], cu[(i + 2) % 3]}, ev[2] = {cv[(i + 1) % 3], cv[(i + 2) % 3]};

@@ -59,11 +59,12 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   // curvature times length squared). A cylinder's triangles then run along its straight direction,
   // as they should; the anisotropy is capped at 10:1 in length.
   // Only where the curvature is directional by construction (cylinders, cones, linear extrusions:
-  // straight in one direction); averaged curvatures of free-form faces say little about any one
-  // place, and a wrong stretch makes slivers that fold on a wavy surface. (Tori would gain too, but
-  // the coarser shared edges it gives them leave B-spline neighbours with flipped triangles.)
+  // straight in one direction; tori, whose fillets turn fast round the tube and slowly along it);
+  // averaged curvatures of free-form faces say little about any one place, and a wrong stretch
+  // makes slivers that fold on a wavy surface.
   const GeomAbs_SurfaceType type = surface_.GetType();
-  const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion;
+  const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion ||
+                           type == GeomAbs_Torus;
   const double kmax = std::max(ku, kv);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
   if (directional && kmax * size > 1e-3) {
