@@ -32,6 +32,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
   double lu = 0, lv = 0, ku = 0, kv = 0;
   int n = 0;
+  int uTurns = 0, vTurns = 0;  // grid points where one direction's curvature is 4x the other's
   for (int i = 0; i < 5; ++i) {
     for (int j = 0; j < 5; ++j) {
       const double u = uMin + (uMax - uMin) * (i + 0.5) / 5, v = vMin + (vMax - vMin) * (j + 0.5) / 5;
@@ -43,8 +44,10 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
       const gp_Vec c = du.Crossed(dv);
       if (c.Magnitude() > 1e-12 * mu * mv && mu > 0 && mv > 0) {
         const gp_Vec nrm = c / c.Magnitude();
-        ku += std::abs(duu.Dot(nrm)) / (mu * mu);
-        kv += std::abs(dvv.Dot(nrm)) / (mv * mv);
+        const double pu = std::abs(duu.Dot(nrm)) / (mu * mu), pv = std::abs(dvv.Dot(nrm)) / (mv * mv);
+        ku += pu, kv += pv;
+        if (pu > 4 * pv) ++uTurns;
+        if (pv > 4 * pu) ++vTurns;
       }
       ++n;
     }
@@ -59,16 +62,19 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   // curvature times length squared). A cylinder's triangles then run along its straight direction,
   // as they should; the anisotropy is capped at 10:1 in length.
   // Only where the curvature is directional by construction (cylinders, cones, linear extrusions:
-  // straight in one direction; tori, whose fillets turn fast round the tube and slowly along it);
-  // averaged curvatures of free-form faces say little about any one place, and a wrong stretch
+  // straight in one direction; tori, whose fillets turn fast round the tube and slowly along it),
+  // or on a free-form face where it is so at every grid point (a fillet or a tube written as a
+  // B-spline): elsewhere averaged curvatures say little about any one place, and a wrong stretch
   // makes slivers that fold on a wavy surface.
   const GeomAbs_SurfaceType type = surface_.GetType();
   const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion ||
                            type == GeomAbs_Torus;
+  const bool freeformDirectional = !directional && (uTurns == n || vTurns == n);
   const double kmax = std::max(ku, kv);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
-  if (directional && kmax * size > 1e-3) {
-    const double kfloor = 1e-2 * kmax;
+  if ((directional || freeformDirectional) && kmax * size > 1e-3) {
+    // 10:1 at most; 3:1 on free-form faces, whose curvature still varies along the stretch.
+    const double kfloor = (directional ? 1e-2 : 1.0 / 9) * kmax;
     su *= std::sqrt(std::max(ku, kfloor) / kmax);
     sv *= std::sqrt(std::max(kv, kfloor) / kmax);
   }
