@@ -566,7 +566,7 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       bound = pipeline;
     }
-    DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
     const CullView cullView =
         makeCullView(constants.modelViewProj, glm::inverse(instance.transform) * view.eye);
     if (outsideFrustum(cullView, sphereAround(part.bounds))) continue;  // the whole instance is out of view
@@ -660,7 +660,7 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     std::uint32_t end =
         std::min<std::uint32_t>(part.firstEdge + part.edgeCount, static_cast<std::uint32_t>(edges_.size()));
     if (part.firstEdge >= end) continue;
-    DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
     if (outsideFrustum(makeCullView(constants.modelViewProj, view.eye), sphereAround(part.bounds))) continue;
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);

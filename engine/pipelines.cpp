@@ -121,12 +121,15 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
     return fragmentModule.error();
   }
 
-  // The same constants for every stage; a shader without one of them ignores it.
-  const std::array<VkBool32, 2> specValues{desc.colorPushed ? VK_TRUE : VK_FALSE,
-                                           isSrgbFormat(format.color) ? VK_FALSE : VK_TRUE};
-  const std::array<VkSpecializationMapEntry, 2> specEntries{
+  // The same constants for every stage; a shader without one of them ignores it. Two-sided
+  // lighting wherever back faces are not culled.
+  const std::array<VkBool32, 3> specValues{desc.colorPushed ? VK_TRUE : VK_FALSE,
+                                           isSrgbFormat(format.color) ? VK_FALSE : VK_TRUE,
+                                           desc.cullBack ? VK_FALSE : VK_TRUE};
+  const std::array<VkSpecializationMapEntry, 3> specEntries{
       VkSpecializationMapEntry{CETVIEW_SPEC_COLOR_PUSHED, 0, sizeof(VkBool32)},
-      VkSpecializationMapEntry{CETVIEW_SPEC_ENCODE_SRGB, sizeof(VkBool32), sizeof(VkBool32)}};
+      VkSpecializationMapEntry{CETVIEW_SPEC_ENCODE_SRGB, sizeof(VkBool32), sizeof(VkBool32)},
+      VkSpecializationMapEntry{CETVIEW_SPEC_TWO_SIDED, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
   VkSpecializationInfo spec{static_cast<std::uint32_t>(specEntries.size()), specEntries.data(),
                             sizeof(specValues), specValues.data()};
 

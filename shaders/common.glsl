@@ -22,6 +22,10 @@ layout(push_constant) uniform PushBlock {
 layout(constant_id = CETVIEW_SPEC_COLOR_PUSHED) const bool kColorPushed = false;
 // Specialization constant CETVIEW_SPEC_ENCODE_SRGB: the target's format is UNORM (see toTarget).
 layout(constant_id = CETVIEW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
+// Specialization constant CETVIEW_SPEC_TWO_SIDED: normals facing away from the eye are lit as their
+// reverse (open shells, mirrored instances); false for culled closed solids, whose visible
+// triangles all face the eye.
+layout(constant_id = CETVIEW_SPEC_TWO_SIDED) const bool kTwoSided = true;
 
 // sRGB -> linear: a cubic fit of the IEC 61966-2-1 curve (within 0.3%), cheap enough per vertex
 // on software rasterisers where pow() is not.

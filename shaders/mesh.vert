@@ -1,7 +1,7 @@
 #version 450
 // Faces: one indirect draw per face with firstInstance = face id, so gl_InstanceIndex names the
 // face; or, with kColorPushed, runs of faces of one colour (draw.color), read by the fragment
-// shader directly. The normal stays in part space (see DrawConstants).
+// shader directly. The normal goes into view space, where the lights are constant (shared.h).
 #extension GL_GOOGLE_include_directive : require
 #include "shared.h"
 #include "common.glsl"
@@ -14,7 +14,7 @@ layout(location = 1) flat out vec3 outColor;
 
 void main() {
   gl_Position = draw.modelViewProj * vec4(inPosition, 1.0);
-  outNormal = inNormal;
+  outNormal = mat3(draw.normalToView0.xyz, draw.normalToView1.xyz, draw.normalToView2.xyz) * inNormal;
   if (kColorPushed) {
     outColor = vec3(0.0);  // unread: the fragment shader takes draw.color
   } else if (draw.color.a >= 0.0) {
