@@ -15,11 +15,6 @@ layout(push_constant) uniform PushBlock {
   DrawConstants draw;
 };
 
-// Specialization constant CETVIEW_SPEC_COLOR_PUSHED of the face pipelines: true where faces are
-// drawn in runs of one colour (devices without multi-draw indirect) and draw.color always holds it,
-// so no colour travels from vertex to fragment (software rasterisers set up every varying per
-// triangle); false: the colour comes from the face table, picked by gl_InstanceIndex.
-layout(constant_id = CETVIEW_SPEC_COLOR_PUSHED) const bool kColorPushed = false;
 // Specialization constant CETVIEW_SPEC_ENCODE_SRGB: the target's format is UNORM (see toTarget).
 layout(constant_id = CETVIEW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
 // Specialization constant CETVIEW_SPEC_TWO_SIDED: normals facing away from the eye are lit as their

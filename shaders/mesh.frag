@@ -7,7 +7,9 @@
 #include "common.glsl"
 
 layout(location = 0) in vec3 inNormal;  // view space
+#ifndef CETVIEW_COLOR_PUSHED
 layout(location = 1) flat in vec3 inColor;
+#endif
 
 layout(location = 0) out vec4 outColor;
 
@@ -31,7 +33,11 @@ void main() {
   s *= s;
   s *= s;
 
-  vec3 color = kColorPushed ? draw.color.rgb : inColor;
+#ifdef CETVIEW_COLOR_PUSHED
+  vec3 color = draw.color.rgb;  // the run's colour (mesh.vert)
+#else
+  vec3 color = inColor;
+#endif
   vec3 lit = color * (CETVIEW_LIGHT_HEADLIGHT * facing + CETVIEW_LIGHT_KEY * key + CETVIEW_LIGHT_SKY * sky) +
              vec3(CETVIEW_LIGHT_SPECULAR * s);
   outColor = toTarget(lit);

@@ -23,9 +23,8 @@ using uint = std::uint32_t;
 #define CETVIEW_BINDING_FACES 1    // storage uint[]: per face, packed sRGB RGBA8 (R in the low byte)
 
 // Specialization constant ids (VkBool32 each), set by every pipeline (engine/pipelines.cpp).
-#define CETVIEW_SPEC_COLOR_PUSHED 0  // face colour in DrawConstants::color, none per vertex
-#define CETVIEW_SPEC_ENCODE_SRGB 1   // the target is UNORM: shaders encode sRGB themselves
-#define CETVIEW_SPEC_TWO_SIDED 2     // faces seen from behind are lit as their front (not culled solids)
+#define CETVIEW_SPEC_ENCODE_SRGB 0  // the target is UNORM: shaders encode sRGB themselves
+#define CETVIEW_SPEC_TWO_SIDED 1    // faces seen from behind are lit as their front (not culled solids)
 
 // The light rig, fixed to the camera and so constant in view space (x right, y up, z towards the
 // eye): a headlight along the view axis, a key light from the upper left in front of the model,
@@ -62,7 +61,7 @@ struct DrawConstants {
   vec4 normalToView1;  //      w unused
   vec4 normalToView2;
   vec4 color;  // linear RGBA used for every face when a >= 0; a < 0: the per-face colours
-               // (with CETVIEW_SPEC_COLOR_PUSHED always a colour: the current run's)
+               // (the *_pushed face shaders: always a colour, the current run's)
 };
 
 #ifdef __cplusplus
