@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "engine/cpu_allocator.h"
 #include "engine/device_select.h"
 #include "engine/vk_check.h"
 
@@ -278,6 +279,7 @@ Result<Device> createDevice(const Instance& instance, const DeviceOptions& optio
   vkGetPhysicalDeviceProperties(result.physicalDevice, &result.properties);
   vkGetPhysicalDeviceMemoryProperties(result.physicalDevice, &result.memory);
   result.name = result.properties.deviceName;
+  if (result.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) keepFreedMemoryForCpuRendering();
 
   auto extensions = deviceExtensions(result.physicalDevice);
   CETVIEW_TRY(extensions);
