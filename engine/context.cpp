@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "engine/cpu_allocator.h"
 #include "engine/device_select.h"
 #include "engine/vk_check.h"
 
@@ -278,10 +279,19 @@ Result<Device> createDevice(const Instance& instance, const DeviceOptions& optio
   vkGetPhysicalDeviceProperties(result.physicalDevice, &result.properties);
   vkGetPhysicalDeviceMemoryProperties(result.physicalDevice, &result.memory);
   result.name = result.properties.deviceName;
+  if (result.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) keepFreedMemoryForCpuRendering();
 
-  VkPhysicalDeviceFeatures supported;
-  vkGetPhysicalDeviceFeatures(result.physicalDevice, &supported);
-  VkPhysicalDeviceFeatures enabled{};
+  auto extensions = deviceExtensions(result.physicalDevice);
+  CETVIEW_TRY(extensions);
+  const bool hasMultiDraw = contains(*extensions, VK_EXT_MULTI_DRAW_EXTENSION_NAME);
+  auto multiDrawSupported =
+      vkInit<VkPhysicalDeviceMultiDrawFeaturesEXT>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTI_DRAW_FEATURES_EXT);
+  auto supported2 = vkInit<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  if (hasMultiDraw) supported2.pNext = &multiDrawSupported;
+  vkGetPhysicalDeviceFeatures2(result.physicalDevice, &supported2);
+  const VkPhysicalDeviceFeatures& supported = supported2.features;
+  auto enabled2 = vkInit<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+  VkPhysicalDeviceFeatures& enabled = enabled2.features;
   enabled.multiDrawIndirect = supported.multiDrawIndirect;
   enabled.drawIndirectFirstInstance = supported.drawIndirectFirstInstance;
   enabled.fillModeNonSolid = supported.fillModeNonSolid;
@@ -291,9 +301,23 @@ Result<Device> createDevice(const Instance& instance, const DeviceOptions& optio
   result.features.fillModeNonSolid = supported.fillModeNonSolid == VK_TRUE;
   result.features.wideLines = supported.wideLines == VK_TRUE;
 
-  auto extensions = deviceExtensions(result.physicalDevice);
-  CETVIEW_TRY(extensions);
   std::vector<const char*> enabledExtensions;
+  auto multiDrawEnabled =
+      vkInit<VkPhysicalDeviceMultiDrawFeaturesEXT>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTI_DRAW_FEATURES_EXT);
+  if (hasMultiDraw && multiDrawSupported.multiDraw == VK_TRUE) {
+    auto multiDrawLimits = vkInit<VkPhysicalDeviceMultiDrawPropertiesEXT>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTI_DRAW_PROPERTIES_EXT);
+    auto properties2 = vkInit<VkPhysicalDeviceProperties2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2);
+    properties2.pNext = &multiDrawLimits;
+    vkGetPhysicalDeviceProperties2(result.physicalDevice, &properties2);
+    if (multiDrawLimits.maxMultiDrawCount > 0) {
+      multiDrawEnabled.multiDraw = VK_TRUE;
+      enabled2.pNext = &multiDrawEnabled;
+      enabledExtensions.push_back(VK_EXT_MULTI_DRAW_EXTENSION_NAME);
+      result.features.multiDraw = true;
+      result.features.maxMultiDrawCount = multiDrawLimits.maxMultiDrawCount;
+    }
+  }
   // Only with a surface: VK_KHR_swapchain needs the instance's VK_KHR_surface, which headless
   // instances do not enable.
   result.swapchainExtension = needPresent && contains(*extensions, VK_KHR_SWAPCHAIN_EXTENSION_NAME);
@@ -310,9 +334,20 @@ Result<Device> createDevice(const Instance& instance, const DeviceOptions& optio
   info.pQueueCreateInfos = &queueInfo;
   info.enabledExtensionCount = static_cast<std::uint32_t>(enabledExtensions.size());
   info.ppEnabledExtensionNames = enabledExtensions.data();
-  info.pEnabledFeatures = &enabled;
+  info.pNext = &enabled2;
   CETVIEW_VK(vkCreateDevice(result.physicalDevice, &info, nullptr, &result.device));
   vkGetDeviceQueue(result.device, result.queueFamily, 0, &result.queue);
+  if (result.features.multiDraw) {
+    result.cmdDrawMultiIndexed = reinterpret_cast<PFN_vkCmdDrawMultiIndexedEXT>(
+        vkGetDeviceProcAddr(result.device, "vkCmdDrawMultiIndexedEXT"));
+    result.cmdDrawMulti =
+        reinterpret_cast<PFN_vkCmdDrawMultiEXT>(vkGetDeviceProcAddr(result.device, "vkCmdDrawMultiEXT"));
+    if (result.cmdDrawMultiIndexed == nullptr || result.cmdDrawMulti == nullptr) {
+      result.features.multiDraw = false;  // enabled but unused: harmless
+      result.cmdDrawMultiIndexed = nullptr;
+      result.cmdDrawMulti = nullptr;
+    }
+  }
   return result;
 }
 

@@ -60,6 +60,10 @@ struct DeviceFeatures {
   bool drawIndirectFirstInstance = false;  // indirect draws carry the face id in firstInstance
   bool fillModeNonSolid = false;           // wireframe display mode (polygon mode LINE)
   bool wideLines = false;
+  // VK_EXT_multi_draw: one call draws several index ranges. Where draws go one by one (lavapipe),
+  // each call costs the driver some microseconds however few triangles it has.
+  bool multiDraw = false;
+  std::uint32_t maxMultiDrawCount = 0;  // ranges per call
 };
 
 struct DeviceOptions {
@@ -78,7 +82,10 @@ struct Device {
   VkPhysicalDeviceMemoryProperties memory{};
   DeviceFeatures features;
   bool swapchainExtension = false;  // VK_KHR_swapchain enabled (only with DeviceOptions::presentSurface)
-  ValidationLog* log = nullptr;     // the instance's log; not owned
+  // Entry points of VK_EXT_multi_draw; null unless features.multiDraw.
+  PFN_vkCmdDrawMultiIndexedEXT cmdDrawMultiIndexed = nullptr;
+  PFN_vkCmdDrawMultiEXT cmdDrawMulti = nullptr;
+  ValidationLog* log = nullptr;  // the instance's log; not owned
 };
 
 // Errors: kNoDevice, kDeviceNotFound (message lists the device names), kMissingExtension, kVulkan.

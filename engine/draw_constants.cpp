@@ -1,12 +1,14 @@
 #include "engine/draw_constants.h"
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 namespace cetview::engine {
 
 glm::vec3 keyLightInView() {
-  return glm::normalize(glm::vec3(-0.45f, 0.65f, 0.62f));
+  return glm::vec3(CETVIEW_KEY_LIGHT_X, CETVIEW_KEY_LIGHT_Y, CETVIEW_KEY_LIGHT_Z);
 }
 
 FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& style) {
@@ -16,27 +18,23 @@ FrameView makeFrameView(const Camera& camera, float aspect, const ViewStyle& sty
   v.towardsEye = -glm::normalize(camera.direction);
   v.eye = camera.projection == Projection::kPerspective ? glm::vec4(camera.eye(), 1.0f)
                                                         : glm::vec4(v.towardsEye, 0.0f);
-  // View space -> world for directions: the transpose of the view matrix's rotation.
-  glm::mat3 toWorld = glm::transpose(glm::mat3(view));
-  v.keyLight = glm::normalize(toWorld * keyLightInView());
-  v.up = glm::normalize(toWorld * glm::vec3(0.0f, 1.0f, 0.0f));
+  v.viewRotation = glm::mat3(view);
   if (!style.fileColors) v.forcedColor = linearColor(style.defaultFaceColor);
   return v;
 }
 
-DrawConstants drawConstants(const FrameView& view, const glm::mat4& model, const std::optional<Color8>& color,
-                            bool twoSided) {
+DrawConstants drawConstants(const FrameView& view, const glm::mat4& model,
+                            const std::optional<Color8>& color) {
   DrawConstants c{};
   c.modelViewProj = view.viewProj * model;
-  // Directions go into part space through the inverse of the linear part; for rigid and
-  // uniformly scaled transforms that keeps every angle, so lighting there is exact.
-  glm::mat4 inverse = glm::inverse(model);
-  glm::mat3 directions(inverse);
-  auto direction = [&](glm::vec3 d) { return glm::vec4(glm::normalize(directions * d), 0.0f); };
-  c.toEye = direction(view.towardsEye);
-  c.toEye.w = twoSided ? 1.0f : 0.0f;
-  c.keyLight = direction(view.keyLight);
-  c.up = direction(view.up);
+  // Normals turn with the linear part of rigid and uniformly scaled transforms (a mirror
+  // included: its inverse transpose is itself); the scale is divided out.
+  glm::mat3 toView = view.viewRotation * glm::mat3(model);
+  const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(model))));
+  if (scale > 0.0f) toView /= scale;
+  c.normalToView0 = glm::vec4(toView[0], 0.0f);
+  c.normalToView1 = glm::vec4(toView[1], 0.0f);
+  c.normalToView2 = glm::vec4(toView[2], 0.0f);
   if (view.forcedColor) {
     c.color = *view.forcedColor;
   } else if (color) {

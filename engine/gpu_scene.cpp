@@ -27,6 +27,7 @@ GpuScene::GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& op
   const bool cpu = device.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   indirect_ = options.indirectDraws && (!cpu || options.indirectDrawsOnCpu) &&
               device.features.multiDrawIndirect && device.features.drawIndirectFirstInstance;
+  multiDraw_ = !indirect_ && options.multiDraw && device.features.multiDraw;
 }
 
 Result<std::unique_ptr<GpuScene>> GpuScene::create(const Device& device, Scene& scene,
@@ -501,8 +502,16 @@ void GpuScene::buildFaceDraws(std::uint32_t part, PartDraws& draws) {
                             static_cast<std::uint32_t>(slot.count), packColor(face.color),
                             linearColor(face.color)});
   }
-  std::sort(list.begin(), list.end(),
-            [](const FaceDraw& a, const FaceDraw& b) { return a.firstIndex < b.firstIndex; });
+  // Slot order, so adjacent slots merge into runs; with multi-draw grouped by colour first, so
+  // each colour is one call (the depth test makes the order of opaque faces invisible).
+  if (multiDraw_) {
+    std::sort(list.begin(), list.end(), [](const FaceDraw& a, const FaceDraw& b) {
+      return a.packed != b.packed ? a.packed < b.packed : a.firstIndex < b.firstIndex;
+    });
+  } else {
+    std::sort(list.begin(), list.end(),
+              [](const FaceDraw& a, const FaceDraw& b) { return a.firstIndex < b.firstIndex; });
+  }
 }
 
 void GpuScene::buildEdgeRuns(std::uint32_t part, PartDraws& draws) {
@@ -557,7 +566,7 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       bound = pipeline;
     }
-    DrawConstants constants = drawConstants(view, instance.transform, instance.color, !cull);
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
     const CullView cullView =
         makeCullView(constants.modelViewProj, glm::inverse(instance.transform) * view.eye);
     if (outsideFrustum(cullView, sphereAround(part.bounds))) continue;  // the whole instance is out of view
@@ -572,7 +581,8 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       continue;
     }
     // One by one: runs of adjacent slots (of one colour unless the instance has its own), leaving
-    // out the faces that cannot show.
+    // out the faces that cannot show. The runs of one colour wait in indexRanges_ and go in as few
+    // calls as the device allows (multi-draw: one per colour change).
     const PartDraws& draws = partDraws(instance.part);
     const bool ownColors = constants.color.a < 0.0f;
     vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
@@ -585,13 +595,13 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     auto flush = [&] {
       if (runCount == 0) return;
       if (ownColors && (!colorPushed || runFace->packed != pushed)) {
+        drawIndexRanges(cmd);  // the previous colour's runs
         vkCmdPushConstants(cmd, layout, kStages, offsetof(DrawConstants, color), sizeof(runFace->color),
                            &runFace->color);
         colorPushed = true;
         pushed = runFace->packed;
       }
-      vkCmdDrawIndexed(cmd, runCount, 1, runFirst, 0, 0);
-      ++faceDrawCalls_;
+      indexRanges_.push_back({runFirst, runCount, 0});
       runCount = 0;
     };
     for (const FaceDraw& face : draws.faces) {
@@ -615,7 +625,28 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
       }
     }
     flush();
+    drawIndexRanges(cmd);
   }
+}
+
+void GpuScene::drawIndexRanges(VkCommandBuffer cmd) {
+  if (indexRanges_.empty()) return;
+  if (multiDraw_) {
+    const std::int32_t vertexOffset = 0;  // the same for every range
+    const auto count = static_cast<std::uint32_t>(indexRanges_.size());
+    for (std::uint32_t first = 0; first < count; first += device_.features.maxMultiDrawCount) {
+      const std::uint32_t n = std::min(count - first, device_.features.maxMultiDrawCount);
+      device_.cmdDrawMultiIndexed(cmd, n, indexRanges_.data() + first, 1, 0,
+                                  sizeof(VkMultiDrawIndexedInfoEXT), &vertexOffset);
+      ++faceDrawCalls_;
+    }
+  } else {
+    for (const VkMultiDrawIndexedInfoEXT& range : indexRanges_) {
+      vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
+      ++faceDrawCalls_;
+    }
+  }
+  indexRanges_.clear();
 }
 
 void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const FrameView& view) {
@@ -629,7 +660,7 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     std::uint32_t end =
         std::min<std::uint32_t>(part.firstEdge + part.edgeCount, static_cast<std::uint32_t>(edges_.size()));
     if (part.firstEdge >= end) continue;
-    DrawConstants constants = drawConstants(view, instance.transform, instance.color, true);
+    DrawConstants constants = drawConstants(view, instance.transform, instance.color);
     if (outsideFrustum(makeCullView(constants.modelViewProj, view.eye), sphereAround(part.bounds))) continue;
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);
@@ -638,6 +669,15 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
         std::uint32_t count = std::min(end - first, maxDraws);
         vkCmdDrawIndirect(cmd, buffers_[kEdgeDraws].buffer.buffer, first * kEdgeDrawSize, count,
                           static_cast<std::uint32_t>(kEdgeDrawSize));
+        ++edgeDrawCalls_;
+      }
+    } else if (multiDraw_) {
+      const std::vector<EdgeRun>& runs = partDraws(instance.part).edges;
+      const auto count = static_cast<std::uint32_t>(runs.size());
+      for (std::uint32_t first = 0; first < count; first += device_.features.maxMultiDrawCount) {
+        const std::uint32_t n = std::min(count - first, device_.features.maxMultiDrawCount);
+        device_.cmdDrawMulti(cmd, n, reinterpret_cast<const VkMultiDrawInfoEXT*>(runs.data() + first), 1, 0,
+                             sizeof(EdgeRun));
         ++edgeDrawCalls_;
       }
     } else {

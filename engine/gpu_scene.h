@@ -13,13 +13,16 @@
 // 5-10 us of the single-threaded front end (llvmpipe flushes and copies its 33 KB fragment state
 // per draw: at 1M triangles the 1200 edge and 800 face draws of the benchmark were a fifth of it).
 // So each part's edges whose slots follow each other in the edge buffer are drawn as one
-// line list, and its faces as one draw per run of adjacent slots of one colour (the colour goes in
-// the push constants, so no per-face colour reaches the shaders). Clusters of kClusterTriangles
-// consecutive triangles of a face that lie outside the view frustum, or wholly face away from the
-// eye on a culled closed solid, are left out as each frame is recorded (face_culling.h): about a
-// quarter of a curved closed model's triangles then never reach lavapipe's front end. On every
-// device, instances whose part's bounding sphere lies outside the view frustum are not drawn. Each part's
-// faces in slot order are kept, rebuilt only when a slot, a face colour or a visibility changed.
+// line list, and its faces as runs of adjacent slots of one colour (the colour goes in the push
+// constants, so no per-face colour reaches the shaders). With VK_EXT_multi_draw (lavapipe has it)
+// the faces are ordered by colour and all runs of one colour go in one call, as do a part's edge
+// runs: a few calls per instance instead of hundreds (about 600 -> 3 in the 1M-triangle benchmark).
+// Clusters of kClusterTriangles consecutive triangles of a face that lie outside the view frustum,
+// or wholly face away from the eye on a culled closed solid, are left out as each frame is recorded
+// (face_culling.h): about a quarter of a curved closed model's triangles then never reach
+// lavapipe's front end. On every device, instances whose part's bounding sphere lies outside the
+// view frustum are not drawn. Each part's drawable faces are kept in order, rebuilt only when a
+// slot, a face colour or a visibility changed.
 //
 // A face's new index array goes in place when it fits its slot and the whole array fits this
 // frame's budget; otherwise into a fresh slot, over as many frames as the budget needs, and the
@@ -29,6 +32,7 @@
 // -> transfer, transfer -> this frame's reads), so in-place overwrites and slot reuse are safe.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 #include <memory>
@@ -59,6 +63,9 @@ struct GpuSceneOptions {
   // Also on CPU devices (lavapipe), where it is off by default: there a multi-draw indirect call
   // that starts past the first command runs about 40x slower than the same draws one by one.
   bool indirectDrawsOnCpu = false;
+  // Draws one by one: the ranges of one colour in one call where the device has VK_EXT_multi_draw;
+  // false: one call per range.
+  bool multiDraw = true;
 };
 
 // What one frame's upload did.
@@ -97,6 +104,7 @@ class GpuScene {
 
   VkBuffer faceColorBuffer() const { return buffers_[kFaceColors].buffer.buffer; }
   bool usesIndirectDraws() const { return indirect_; }
+  bool usesMultiDraw() const { return multiDraw_; }
   // Draw calls the last recordFaceDraws() / recordEdgeDraws() issued (indirect: one per call).
   std::uint32_t lastFaceDrawCalls() const { return faceDrawCalls_; }
   std::uint32_t lastEdgeDrawCalls() const { return edgeDrawCalls_; }
@@ -151,9 +159,13 @@ class GpuScene {
     std::uint32_t packed = 0;  // packColor() of the face's colour
     glm::vec4 color{0.0f};     // the same, linear
   };
+  // Laid out as VkMultiDrawInfoEXT, so a part's runs go to vkCmdDrawMultiEXT as they are.
   struct EdgeRun {
     std::uint32_t firstPoint = 0, pointCount = 0;
   };
+  static_assert(sizeof(EdgeRun) == sizeof(VkMultiDrawInfoEXT) &&
+                offsetof(EdgeRun, firstPoint) == offsetof(VkMultiDrawInfoEXT, firstVertex) &&
+                offsetof(EdgeRun, pointCount) == offsetof(VkMultiDrawInfoEXT, vertexCount));
   struct PartDraws {
     bool facesDirty = true, edgesDirty = true;
     std::uint64_t sceneVersion = ~std::uint64_t{0};  // Scene::Part::drawVersion `faces` matches
@@ -165,6 +177,8 @@ class GpuScene {
   PartDraws& partDraws(std::uint32_t part);
   void buildFaceDraws(std::uint32_t part, PartDraws& draws);
   void buildEdgeRuns(std::uint32_t part, PartDraws& draws);
+  // Draws and empties indexRanges_ (one by one, with the push constants as they are).
+  void drawIndexRanges(VkCommandBuffer cmd);
   Status init();
   void reset();
   // Makes buffers_[t] at least `bytes` large, keeping [0, keepBytes) of its content.
@@ -197,6 +211,7 @@ class GpuScene {
   Scene& scene_;
   GpuSceneOptions options_;
   bool indirect_ = false;
+  bool multiDraw_ = false;  // one-by-one draws through VK_EXT_multi_draw
   std::uint64_t generation_ = 0;
   Growable buffers_[kTargetCount];
   RangeAllocator indexSlots_;
@@ -206,6 +221,7 @@ class GpuScene {
   std::uint64_t committedIndices_ = 0;
   std::vector<PartDraws> partDraws_;
   std::uint32_t faceDrawCalls_ = 0, edgeDrawCalls_ = 0, clustersCulled_ = 0;
+  std::vector<VkMultiDrawIndexedInfoEXT> indexRanges_;  // recordFaceDraws(): runs of one colour
 
   // Per-frame recording state.
   UploadRing* ring_ = nullptr;

@@ -106,7 +106,6 @@ struct PipelineDesc {
   bool depthWrite;
   bool depthBias;  // pushes faces back so lines on them win the depth test
   bool cullBack = false;
-  bool colorPushed = false;  // CETVIEW_SPEC_COLOR_PUSHED, for the face shaders
 };
 
 Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, const TargetFormat& format,
@@ -121,12 +120,13 @@ Result<VkPipeline> createPipeline(const Device& device, const Pipelines& p, cons
     return fragmentModule.error();
   }
 
-  // The same constants for every stage; a shader without one of them ignores it.
-  const std::array<VkBool32, 2> specValues{desc.colorPushed ? VK_TRUE : VK_FALSE,
-                                           isSrgbFormat(format.color) ? VK_FALSE : VK_TRUE};
+  // The same constants for every stage; a shader without one of them ignores it. Two-sided
+  // lighting wherever back faces are not culled.
+  const std::array<VkBool32, 2> specValues{isSrgbFormat(format.color) ? VK_FALSE : VK_TRUE,
+                                           desc.cullBack ? VK_FALSE : VK_TRUE};
   const std::array<VkSpecializationMapEntry, 2> specEntries{
-      VkSpecializationMapEntry{CETVIEW_SPEC_COLOR_PUSHED, 0, sizeof(VkBool32)},
-      VkSpecializationMapEntry{CETVIEW_SPEC_ENCODE_SRGB, sizeof(VkBool32), sizeof(VkBool32)}};
+      VkSpecializationMapEntry{CETVIEW_SPEC_ENCODE_SRGB, 0, sizeof(VkBool32)},
+      VkSpecializationMapEntry{CETVIEW_SPEC_TWO_SIDED, sizeof(VkBool32), sizeof(VkBool32)}};
   VkSpecializationInfo spec{static_cast<std::uint32_t>(specEntries.size()), specEntries.data(),
                             sizeof(specValues), specValues.data()};
 
@@ -261,15 +261,16 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
                                     kTriangles, VK_POLYGON_MODE_FILL, false, false, false});
   CETVIEW_TRY(background);
   p.background = *background;
-  PipelineDesc shadedDesc{ShaderId::kMeshVert,
-                          ShaderId::kMeshFrag,
+  // One colour per draw (one-by-one draws): the shaders without a colour varying.
+  const ShaderId meshVert = p.colorPushed ? ShaderId::kMeshPushedVert : ShaderId::kMeshVert;
+  PipelineDesc shadedDesc{meshVert,
+                          p.colorPushed ? ShaderId::kMeshPushedFrag : ShaderId::kMeshFrag,
                           Input::kMesh,
                           kTriangles,
                           VK_POLYGON_MODE_FILL,
                           true,
                           true,
                           true};
-  shadedDesc.colorPushed = p.colorPushed;
   auto shaded = createPipeline(device, p, format, shadedDesc);
   CETVIEW_TRY(shaded);
   p.shaded = *shaded;
@@ -279,15 +280,14 @@ Status createPassAndPipelines(const Device& device, const TargetFormat& format, 
   CETVIEW_TRY(shadedCulled);
   p.shadedCulled = *shadedCulled;
   if (device.features.fillModeNonSolid) {
-    PipelineDesc wireDesc{ShaderId::kMeshVert,
-                          ShaderId::kWireFrag,
+    PipelineDesc wireDesc{meshVert,
+                          p.colorPushed ? ShaderId::kWirePushedFrag : ShaderId::kWireFrag,
                           Input::kMesh,
                           kTriangles,
                           VK_POLYGON_MODE_LINE,
                           true,
                           true,
                           false};
-    wireDesc.colorPushed = p.colorPushed;
     auto wireframe = createPipeline(device, p, format, wireDesc);
     CETVIEW_TRY(wireframe);
     p.wireframe = *wireframe;

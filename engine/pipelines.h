@@ -29,11 +29,12 @@ struct Pipelines {
   VkPipeline shadedCulled = VK_NULL_HANDLE;  // back faces culled: closed solids only
   VkPipeline wireframe = VK_NULL_HANDLE;     // VK_NULL_HANDLE without DeviceFeatures::fillModeNonSolid
   VkPipeline edges = VK_NULL_HANDLE;
-  bool colorPushed = false;  // the face pipelines' CETVIEW_SPEC_COLOR_PUSHED
+  bool colorPushed = false;  // the face pipelines use the *_pushed shaders
 };
 
-// `colorPushed`: the face pipelines take the face colour from DrawConstants::color alone (for
-// GpuScene's one-by-one draws, see shaders/common.glsl). Errors: kVulkan, kOutOfMemory.
+// `colorPushed`: the face pipelines take the face colour from DrawConstants::color alone, with
+// shaders that have no colour varying (for GpuScene's one-by-one draws, see shaders/mesh.vert).
+// Errors: kVulkan, kOutOfMemory.
 Result<Pipelines> createPipelines(const Device& device, const TargetFormat& format, bool colorPushed);
 // For a new target format: a new render pass and pipelines; the descriptor set layout and the
 // pipeline layout stay, so descriptor sets allocated with them stay valid and updatable.

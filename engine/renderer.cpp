@@ -311,7 +311,6 @@ void Renderer::writeGlobals(Frame& frame, const ViewStyle& style) {
   g.backgroundTop = linearColor(style.backgroundTop);
   g.backgroundBottom = linearColor(style.backgroundBottom);
   g.edgeColor = linearColor(style.edgeColor);
-  g.lightIntensity = glm::vec4(0.55f, 0.42f, 0.16f, 0.12f);  // headlight, key, sky ambient, specular
   std::memcpy(frame.globals.mapped, &g, sizeof(g));
 }
 

@@ -132,8 +132,11 @@ class Renderer {
   // Whether faces are drawn with multi-draw indirect (see GpuSceneOptions) or one call per run of
   // faces (gpu_scene.h).
   bool usesIndirectDraws() const { return gpuScene_->usesIndirectDraws(); }
+  // One by one: whether the runs of one colour go in one VK_EXT_multi_draw call (gpu_scene.h).
+  bool usesMultiDraw() const { return gpuScene_->usesMultiDraw(); }
   // Draw calls the last rendered frame issued for faces and for edges (one by one: one per run of
-  // adjacent slots, see gpu_scene.h; indirect: one per multi-draw call).
+  // adjacent slots, or with multi-draw one per colour, see gpu_scene.h; indirect: one per
+  // multi-draw indirect call).
   std::uint32_t lastFaceDrawCalls() const { return gpuScene_->lastFaceDrawCalls(); }
   std::uint32_t lastEdgeDrawCalls() const { return gpuScene_->lastEdgeDrawCalls(); }
   // Clusters of up to kClusterTriangles triangles of a face (per instance) the last rendered frame

@@ -15,13 +15,12 @@ layout(push_constant) uniform PushBlock {
   DrawConstants draw;
 };
 
-// Specialization constant CETVIEW_SPEC_COLOR_PUSHED of the face pipelines: true where faces are
-// drawn in runs of one colour (devices without multi-draw indirect) and draw.color always holds it,
-// so no colour travels from vertex to fragment (software rasterisers set up every varying per
-// triangle); false: the colour comes from the face table, picked by gl_InstanceIndex.
-layout(constant_id = CETVIEW_SPEC_COLOR_PUSHED) const bool kColorPushed = false;
 // Specialization constant CETVIEW_SPEC_ENCODE_SRGB: the target's format is UNORM (see toTarget).
 layout(constant_id = CETVIEW_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
+// Specialization constant CETVIEW_SPEC_TWO_SIDED: normals facing away from the eye are lit as their
+// reverse (open shells, mirrored instances); false for culled closed solids, whose visible
+// triangles all face the eye.
+layout(constant_id = CETVIEW_SPEC_TWO_SIDED) const bool kTwoSided = true;
 
 // sRGB -> linear: a cubic fit of the IEC 61966-2-1 curve (within 0.3%), cheap enough per vertex
 // on software rasterisers where pow() is not.
@@ -29,14 +28,15 @@ vec3 srgbToLinear(vec3 c) {
   return c * (c * (c * 0.305306011 + 0.682171111) + 0.012522878);
 }
 
-// Linear -> sRGB for UNORM targets: the power segment of IEC 61966-2-1 as a minimax fit in c^1/2,
-// c^1/4 and c^1/8, within 0.15/255 of the exact curve (an 8-bit result at most one step off);
-// three square roots per channel cost a software rasteriser less than pow() or its own sRGB store.
+// Linear -> sRGB for UNORM targets: the power segment of IEC 61966-2-1 as a degree-5 minimax
+// polynomial in c^1/2, within 0.09/255 of the exact curve (an 8-bit result at most one step off);
+// one square root and five multiply-adds per channel cost a software rasteriser less than pow(),
+// more square roots, or its own sRGB store.
 vec3 linearToSrgb(vec3 c) {
-  vec3 s1 = sqrt(c);
-  vec3 s2 = sqrt(s1);
-  vec3 s3 = sqrt(s2);
-  vec3 curve = 0.591531888 * s1 + 0.769093895 * s2 - 0.360071117 * s3;
+  vec3 t = sqrt(c);
+  vec3 curve =
+      t * (t * (t * (t * (t * 0.517239188 - 1.623495056) + 2.031424613) - 1.402677422) + 1.517941537) -
+      0.040109183;
   return mix(curve, c * 12.92, lessThan(c, vec3(0.0031308)));
 }
 

@@ -12,8 +12,11 @@ using std::uint32_t;  // the generated headers spell it unqualified
 #include "edge_frag.h"
 #include "edge_vert.h"
 #include "mesh_frag.h"
+#include "mesh_pushed_frag.h"
+#include "mesh_pushed_vert.h"
 #include "mesh_vert.h"
 #include "wire_frag.h"
+#include "wire_pushed_frag.h"
 
 template <std::size_t N>
 Spirv wrap(const std::uint32_t (&words)[N]) {
@@ -33,6 +36,12 @@ Spirv spirv(ShaderId id) {
       return wrap(spirv_mesh_frag);
     case ShaderId::kWireFrag:
       return wrap(spirv_wire_frag);
+    case ShaderId::kMeshPushedVert:
+      return wrap(spirv_mesh_pushed_vert);
+    case ShaderId::kMeshPushedFrag:
+      return wrap(spirv_mesh_pushed_frag);
+    case ShaderId::kWirePushedFrag:
+      return wrap(spirv_wire_pushed_frag);
     case ShaderId::kEdgeVert:
       return wrap(spirv_edge_vert);
     case ShaderId::kEdgeFrag:

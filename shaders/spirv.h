@@ -9,9 +9,12 @@ namespace cetview::shaders {
 enum class ShaderId {
   kBackgroundVert,
   kBackgroundFrag,
-  kMeshVert,
+  kMeshVert,  // a colour per face (the face table), for multi-draw indirect
   kMeshFrag,
   kWireFrag,
+  kMeshPushedVert,  // CETVIEW_COLOR_PUSHED: one colour per draw (DrawConstants::color)
+  kMeshPushedFrag,
+  kWirePushedFrag,
   kEdgeVert,
   kEdgeFrag,
 };

@@ -207,49 +207,63 @@ TEST_F(UpdateTest, DirectDrawsMatchIndirectDraws) {
 
 TEST_F(UpdateTest, AdjacentFacesOfOneColourAndAllEdgesAreDrawnInFewCalls) {
   // One-by-one draws (lavapipe's default) merge the faces whose index slots follow each other and
-  // share a colour, and every edge of a part into one line list; the picture stays the same.
+  // share a colour, and every edge of a part into one line list; with VK_EXT_multi_draw every run
+  // of one colour is one call. The picture stays the same either way.
   MeshData box = cube(2.0f, 4);  // six faces, six colours, twelve edges
   box.closedSolid = false;       // every face drawn (no culling of back-facing faces)
-  Renderer* r = load(box);
-  ASSERT_NE(r, nullptr);
-  ASSERT_FALSE(r->usesIndirectDraws()) << "the test must exercise the one-by-one path";
-  Scene& scene = r->scene();
-  ASSERT_TRUE(r->finishUploads().ok());
-  Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
-  RgbaImage sixColours = shot(*r, camera);
-  EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
-  EXPECT_EQ(r->lastEdgeDrawCalls(), 1u);
-
-  // Faces 1 and 2 take face 0's colour: one run of three, then faces 3, 4 and 5.
   const Color8 first = box.faces[0].color;
-  for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, first).ok());
-  ASSERT_TRUE(r->finishUploads().ok());
-  RgbaImage merged = shot(*r, camera);
-  EXPECT_EQ(r->lastFaceDrawCalls(), 4u);
-
-  // A hidden face splits its run; an instance colour ignores the face colours: one draw again.
-  ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, false).ok());
-  ASSERT_TRUE(r->finishUploads().ok());
-  (void)shot(*r, camera);
-  EXPECT_EQ(r->lastFaceDrawCalls(), 5u);
-  ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, true).ok());
-  ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, Color8{200, 60, 60, 255}).ok());
-  ASSERT_TRUE(r->finishUploads().ok());
-  (void)shot(*r, camera);
-  EXPECT_EQ(r->lastFaceDrawCalls(), 1u);
-  ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, std::nullopt).ok());
-  for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, box.faces[f].color).ok());
-  ASSERT_TRUE(r->finishUploads().ok());
-  EXPECT_EQ(compareImages(sixColours, shot(*r, camera), 0).differing, 0u);
-  EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
-
-  // The merged draws look like the same colours given from the start (this replaces `r`).
-  MeshData recoloured = box;
+  MeshData recoloured = box;  // faces 1 and 2 in face 0's colour from the start
   for (std::uint32_t f : {1u, 2u}) recoloured.faces[f].color = first;
-  Renderer* reference = load(recoloured);
-  ASSERT_NE(reference, nullptr);
-  ASSERT_TRUE(reference->finishUploads().ok());
-  EXPECT_EQ(compareImages(shot(*reference, camera), merged, 0).differing, 0u);
+  RgbaImage pictures[2][2];  // [multi-draw][six colours, merged]
+  for (bool multiDraw : {false, true}) {
+    SCOPED_TRACE(multiDraw ? "multi-draw" : "one call per run");
+    RendererOptions options;
+    options.scene.multiDraw = multiDraw;
+    Renderer* r = load(box, options);
+    ASSERT_NE(r, nullptr);
+    ASSERT_FALSE(r->usesIndirectDraws()) << "the test must exercise the one-by-one path";
+    ASSERT_EQ(r->usesMultiDraw(), multiDraw) << "lavapipe has VK_EXT_multi_draw";
+    Scene& scene = r->scene();
+    ASSERT_TRUE(r->finishUploads().ok());
+    Camera camera = standardView(StandardView::kIso, scene.bounds(), r->aspect());
+    RgbaImage sixColours = shot(*r, camera);
+    EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
+    EXPECT_EQ(r->lastEdgeDrawCalls(), 1u);
+
+    // Faces 1 and 2 take face 0's colour: one run of three, then faces 3, 4 and 5.
+    for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, first).ok());
+    ASSERT_TRUE(r->finishUploads().ok());
+    RgbaImage merged = shot(*r, camera);
+    EXPECT_EQ(r->lastFaceDrawCalls(), 4u);
+
+    // A hidden face splits its run (two runs of one colour: one multi-draw call); an instance
+    // colour ignores the face colours: one draw again.
+    ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, false).ok());
+    ASSERT_TRUE(r->finishUploads().ok());
+    (void)shot(*r, camera);
+    EXPECT_EQ(r->lastFaceDrawCalls(), multiDraw ? 4u : 5u);
+    ASSERT_TRUE(scene.setFaceVisible(FaceId{1}, true).ok());
+    ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, Color8{200, 60, 60, 255}).ok());
+    ASSERT_TRUE(r->finishUploads().ok());
+    (void)shot(*r, camera);
+    EXPECT_EQ(r->lastFaceDrawCalls(), 1u);
+    ASSERT_TRUE(scene.setInstanceColor(InstanceId{0}, std::nullopt).ok());
+    for (std::uint32_t f : {1u, 2u}) ASSERT_TRUE(scene.setFaceColor(FaceId{f}, box.faces[f].color).ok());
+    ASSERT_TRUE(r->finishUploads().ok());
+    EXPECT_EQ(compareImages(sixColours, shot(*r, camera), 0).differing, 0u);
+    EXPECT_EQ(r->lastFaceDrawCalls(), 6u);
+
+    // The merged draws look like the same colours given from the start (this replaces `r`).
+    Renderer* reference = load(recoloured, options);
+    ASSERT_NE(reference, nullptr);
+    ASSERT_TRUE(reference->finishUploads().ok());
+    EXPECT_EQ(compareImages(shot(*reference, camera), merged, 0).differing, 0u);
+    pictures[multiDraw][0] = sixColours;
+    pictures[multiDraw][1] = merged;
+  }
+  // Multi-draw (faces grouped by colour) gives the same pixels as slot order.
+  EXPECT_EQ(compareImages(pictures[0][0], pictures[1][0], 0).differing, 0u);
+  EXPECT_EQ(compareImages(pictures[0][1], pictures[1][1], 0).differing, 0u);
 }
 
 TEST_F(UpdateTest, HidingRecolouringAndClearing) {
@@ -448,7 +462,6 @@ TEST_F(UpdateTest, RenderMeshToPngWritesTheSameImage) {
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().code, ErrorCode::kIo);
 }
-
 
 // warmUp() draws its own small scene once and leaves nothing behind: the scene is empty afterwards
 // and a model drawn next looks exactly as on a renderer that was never warmed up.

@@ -1,7 +1,10 @@
 // cetview_render_bench: how fast the engine draws and uploads, headless, on whatever device it
 // picks (lavapipe on a machine without a GPU).
 //
-//   cetview_render_bench [--device NAME] [--width W] [--height H] [--max-triangles N] [--seconds S]
+//   cetview_render_bench [--device NAME] [--width W] [--height H] [--min-triangles N]
+//                        [--max-triangles N] [--seconds S | --frames N] [--section 1|2|3] [--closed-only]
+//
+// --frames: exactly N measured frames per row of section 1 (for instruction counts under perf stat).
 //
 // 1. Frame time at W x H (default 1280x720) for 10k .. 2M triangles (grids of 8-face spheres with
 //    B-rep edges), shaded with edges: closed solids (back faces culled) and open shells
@@ -42,8 +45,12 @@ namespace {
 struct Args {
   std::string device;
   std::uint32_t width = 1280, height = 720;
+  std::uint64_t minTriangles = 0;  // rows of section 1 below this are skipped
   std::uint64_t maxTriangles = 2000000;
-  double seconds = 2.0;  // time spent measuring each row
+  int section = 0;          // 0: all three
+  bool closedOnly = false;  // section 1: only the closed solid 1x column
+  double seconds = 2.0;     // time spent measuring each row
+  int frames = 0;           // > 0: frames measured per row of section 1 instead
 };
 
 // The largest budget a Renderer takes (512 MiB); "unlimited" in the tables.
@@ -160,7 +167,8 @@ struct FrameCost {
 };
 
 // Cost of back-to-back frames (after a warm-up), measured for about `seconds`.
-FrameCost frameCost(Renderer& r, const Camera& camera, const ViewStyle& style, double seconds) {
+FrameCost frameCost(Renderer& r, const Camera& camera, const ViewStyle& style, double seconds,
+                    int exactFrames) {
   for (int i = 0; i < 3; ++i) draw(r, camera, style);
   check(r.waitIdle());
   int frames = 0;
@@ -170,7 +178,7 @@ FrameCost frameCost(Renderer& r, const Camera& camera, const ViewStyle& style, d
   do {
     draw(r, camera, style);
     ++frames;
-  } while (since(start) < seconds || frames < 5);
+  } while (exactFrames > 0 ? frames < exactFrames : since(start) < seconds || frames < 5);
   check(r.waitIdle());
   FrameCost cost{1000.0 * since(start) / frames, 1000.0 * (cpuSeconds() - cpuStart) / frames, 0.0};
   for (const auto& [thread, cpu] : threadCpuSeconds()) {
@@ -203,6 +211,7 @@ void frameTimes(const Device& device, const Args& args) {
   const std::uint64_t targets[] = {10000, 100000, 500000, 1000000, 2000000};
   for (std::uint64_t target : targets) {
     if (target > args.maxTriangles) break;
+    if (target < args.minTriangles) continue;
     MeshData mesh = sphereGridOf(target, segmentsFor(target));
     struct Column {
       bool closed;
@@ -210,20 +219,25 @@ void frameTimes(const Device& device, const Args& args) {
     };
     const Column columns[] = {{true, 1}, {false, 1}, {true, 4}};
     FrameCost cost[3];
-    for (int k = 0; k < 3; ++k) {
+    const int columnCount = args.closedOnly ? 1 : 3;
+    for (int k = 0; k < columnCount; ++k) {
       mesh.closedSolid = columns[k].closed;
       auto r = makeRenderer(device, args, columns[k].samples, kUnlimited);
       auto part = addMesh(r->scene(), mesh);
       if (!part) check(part.error());
       check(r->finishUploads());
       Camera camera = standardView(StandardView::kIso, r->scene().bounds(), r->aspect());
-      cost[k] = frameCost(*r, camera, ViewStyle{}, args.seconds);
+      cost[k] = frameCost(*r, camera, ViewStyle{}, args.seconds, args.frames);
     }
     std::printf("%9llu %5zu", static_cast<unsigned long long>(test::triangleCount(mesh)), mesh.faces.size());
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < std::min(columnCount, 2); ++k) {
       const FrameCost& c = cost[k];
       std::printf(" | %6.1f %5.1f %6.1f %6.1f %7.1f", c.wallMs, 1000.0 / c.wallMs, c.cpuMs, c.busiestMs,
                   1000.0 / dedicatedMs(c, cores));
+    }
+    if (columnCount < 3) {
+      std::printf("\n");
+      continue;
     }
     std::printf(" | %6.1f %5.1f %7.1f\n", cost[2].wallMs, 1000.0 / cost[2].wallMs,
                 1000.0 / dedicatedMs(cost[2], cores));
@@ -335,14 +349,23 @@ int main(int argc, char** argv) {
       args.width = static_cast<std::uint32_t>(std::stoul(next()));
     } else if (a == "--height") {
       args.height = static_cast<std::uint32_t>(std::stoul(next()));
+    } else if (a == "--min-triangles") {
+      args.minTriangles = std::stoull(next());
+    } else if (a == "--closed-only") {
+      args.closedOnly = true;
+    } else if (a == "--section") {
+      args.section = std::stoi(next());
     } else if (a == "--max-triangles") {
       args.maxTriangles = std::stoull(next());
+    } else if (a == "--frames") {
+      args.frames = std::stoi(next());
     } else if (a == "--seconds") {
       args.seconds = std::stod(next());
     } else {
       std::fprintf(stderr,
-                   "usage: cetview_render_bench [--device NAME] [--width W] [--height H] [--max-triangles N] "
-                   "[--seconds S]\n");
+                   "usage: cetview_render_bench [--device NAME] [--width W] [--height H] [--min-triangles N] "
+                   "[--max-triangles N] [--seconds S | --frames N] [--section 1|2|3] "
+                   "[--closed-only]\n");
       return 2;
     }
   }
@@ -358,8 +381,8 @@ int main(int argc, char** argv) {
   std::printf("cetview_render_bench on %s\n", describeDevice(session.device).c_str());
   if (const char* threads = std::getenv("LP_NUM_THREADS")) std::printf("LP_NUM_THREADS=%s\n", threads);
 
-  frameTimes(session.device, args);
-  uploadThroughput(session.device, args);
-  streaming(session.device, args);
+  if (args.section == 0 || args.section == 1) frameTimes(session.device, args);
+  if (args.section == 0 || args.section == 2) uploadThroughput(session.device, args);
+  if (args.section == 0 || args.section == 3) streaming(session.device, args);
   return 0;
 }
