@@ -6,7 +6,8 @@
 // clustered in one span and costs several times a direct evaluation for scattered ones: the coarse
 // levels of a face with thousands of spans (occ/terrain.brep: 309 x 320 bicubic spans) ask nearly
 // every point in a new span. SurfaceEval uses this for points outside the cached span and leaves
-// runs of points inside one span to OpenCASCADE (see SpanRouting).
+// runs of points inside one span to OpenCASCADE (SurfaceEval::cached); edge discretisation uses it
+// for every point of a B-spline face (an instance is immutable: threads may share it).
 #pragma once
 
 #include <Geom_BSplineSurface.hxx>

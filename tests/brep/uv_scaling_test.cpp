@@ -1,0 +1,88 @@
+// SurfaceEval's UV scaling (tessellation/brep/src): each direction's scale is its mean 3D speed,
+// weighted by the square root of its curvature where the curvature is directional, so triangles run
+// along the flat direction. Checked on a torus (up to 10:1), on the same torus written as a B-spline
+// (a fillet as STEP files carry them: free-form, up to 3:1) and on a B-spline sheet curved one way
+// here and the other way there (no stretch).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <gp_Ax3.hxx>
+
+#include "surface_eval.h"
+
+namespace cetview::brep {
+namespace {
+
+// Mean |Su| and |Sv| over the 5x5 grid SurfaceEval samples: the scales without any weighting.
+void meanSpeeds(const SurfaceEval& eval, double& lu, double& lv) {
+  lu = lv = 0;
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) {
+      const double u = eval.uMin + (eval.uMax - eval.uMin) * (i + 0.5) / 5;
+      const double v = eval.vMin + (eval.vMax - eval.vMin) * (j + 0.5) / 5;
+      gp_Pnt p;
+      gp_Vec du, dv;
+      eval.adaptor().D1(u, v, p, du, dv);
+      lu += du.Magnitude() / 25, lv += dv.Magnitude() / 25;
+    }
+  }
+}
+
+// How much more the flat direction (u, along the tube) is stretched than the curved one.
+double stretch(const Handle(Geom_Surface)& surface) {
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7);
+  const SurfaceEval eval(face);
+  double lu = 0, lv = 0;
+  meanSpeeds(eval, lu, lv);
+  return (eval.sv / lv) / (eval.su / lu);
+}
+
+const gp_Ax3 kFrame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1), gp_Dir(1, 0, 0));
+
+// A quarter of a thin torus (R = 10, r = 1): along the tube it turns 10 times slower than round it.
+Handle(Geom_Surface) torusPatch() {
+  return new Geom_RectangularTrimmedSurface(new Geom_ToroidalSurface(kFrame, 10, 1), 0, M_PI / 2, 0, M_PI / 2);
+}
+
+TEST(UvScaling, TorusRunsAlongItsTube) {
+  // sqrt(k_round / k_along) from the patch's mean curvatures: about 4 (a torus may go to 10:1;
+  // free-form faces stop at 3:1).
+  const double s = stretch(torusPatch());
+  EXPECT_GT(s, 3.5);
+  EXPECT_LE(s, 10.0 + 1e-9);
+}
+
+TEST(UvScaling, BSplineFilletRunsAlongItsTubeAtMostThreeToOne) {
+  const Handle(Geom_BSplineSurface) fillet = GeomConvert::SurfaceToBSplineSurface(torusPatch());
+  ASSERT_FALSE(fillet.IsNull());
+  const double s = stretch(fillet);
+  EXPECT_GT(s, 2.0);
+  EXPECT_LE(s, 3.0 + 1e-9);
+}
+
+TEST(UvScaling, BSplineCurvedBothWaysIsNotStretched) {
+  // A sheet rippled along u at one end and along v at the other: on average curved more along u,
+  // but not one way everywhere. Stretching it by its averages would make slivers where it bends
+  // the other way.
+  TColgp_Array2OfPnt points(1, 25, 1, 25);
+  for (int i = 1; i <= 25; ++i) {
+    for (int j = 1; j <= 25; ++j) {
+      const double x = (i - 1) / 24.0, y = (j - 1) / 24.0;
+      points(i, j) = gp_Pnt(x, y, 0.05 * std::sin(12 * x) * (1 - y) + 0.02 * std::sin(6 * y) * y);
+    }
+  }
+  const Handle(Geom_BSplineSurface) sheet = GeomAPI_PointsToBSplineSurface(points).Surface();
+  ASSERT_FALSE(sheet.IsNull());
+  EXPECT_NEAR(stretch(sheet), 1.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace cetview::brep
