@@ -124,10 +124,9 @@ bool ProgressiveStream::runLevel(int level) {
       ++facesDone_;
     }
   };
-  std::vector<std::thread> threads;
-  for (unsigned w = 1; w < options_.threads; ++w) threads.emplace_back(work, w);
-  work(0);
-  for (auto& t : threads) t.join();
+  // Workers out of faces help the others' large faces (the end of every level; all of a model of
+  // one big face).
+  tess_.runWorkers(options_.threads, work);
   return !cancelled.load();
 }
 

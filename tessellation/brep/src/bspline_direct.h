@@ -5,9 +5,10 @@
 // rebuilt whenever a point falls in another span than the last one. That pays off for points
 // clustered in one span and costs several times a direct evaluation for scattered ones: the coarse
 // levels of a face with thousands of spans (occ/terrain.brep: 309 x 320 bicubic spans) ask nearly
-// every point in a new span. SurfaceEval uses this for points outside the cached span and leaves
-// runs of points inside one span to OpenCASCADE (SurfaceEval::cached); edge discretisation uses it
-// for every point of a B-spline face (an instance is immutable: threads may share it).
+// every point in a new span. Over the sample models, evaluating every point directly was as fast
+// as leaving runs of points in one span to OpenCASCADE's cache, or faster (occ/terrain.brep 10%).
+// SurfaceEval and the edge discretisation use it for every point of a B-spline face; an instance
+// is immutable, so threads share it, and a point's value does not depend on the points before it.
 #pragma once
 
 #include <Geom_BSplineSurface.hxx>

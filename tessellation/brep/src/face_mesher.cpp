@@ -19,11 +19,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 
 #include <Standard_Failure.hxx>
 
 #include "brepmesh_fallback.h"
 #include "edge_table.h"
+#include "work_sharing.h"
 
 namespace cetview::brep {
 namespace {
@@ -31,6 +33,8 @@ namespace {
 // Passes of batch insertion per level. A pass splits an independent set of the offending triangles
 // (at least one), so this bounds a level's refinement depth, not its work.
 constexpr int kMaxPasses = 400;
+// Triangles per chunk when a pass's measuring is shared out (a triangle takes a few microseconds).
+constexpr std::size_t kMeasureGrain = 64;
 const bool kDebugRefine = std::getenv("CETVIEW_DEBUG_REFINE") != nullptr;  // traces split decisions
 
 double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::VertexId>& loop) {
@@ -358,22 +362,53 @@ bool FaceMesher::edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& devia
   return true;
 }
 
-void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit,
-                                  TriangleRecord& r) const {
+FaceMesher::Corners FaceMesher::corners(cet::TriangleId t, const FaceMesh& mesh) const {
   const cet::CetMesh& m = cdt_->mesh();
-  cet::VertexId v[3];
-  gp_Pnt P[3];
-  double U[3], V[3];
+  Corners c;
   for (int i = 0; i < 3; ++i) {
-    v[i] = m.vertex(t, i);
-    const std::size_t o = base_ + v[i];
-    P[i] = gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
-    U[i] = mesh.uv[2 * o], V[i] = mesh.uv[2 * o + 1];
+    c.v[i] = m.vertex(t, i);
+    const std::size_t o = base_ + c.v[i];
+    c.p[i] = gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+    c.u[i] = mesh.uv[2 * o], c.w[i] = mesh.uv[2 * o + 1];
   }
+  const double e = settings_.coincident;
+  c.collapsed = c.p[0].IsEqual(c.p[1], e) || c.p[1].IsEqual(c.p[2], e) || c.p[0].IsEqual(c.p[2], e);
+  return c;
+}
+
+double FaceMesher::sample(const Corners& c, const double b[3], double& corresponding) const {
+  // A sample whose own surface point is already within the final tolerance passes on every level
+  // (each is at least as coarse): no need to find its foot.
+  const double enough = kDeviationMargin * settings_.finalChordal;
+  double u = 0, w = 0;
+  eval_.blend(3, b, c.u, c.w, u, w);
+  const gp_Pnt M(b[0] * c.p[0].XYZ() + b[1] * c.p[1].XYZ() + b[2] * c.p[2].XYZ());
+  if (c.collapsed) return corresponding = eval_.point(u, w).Distance(M);
+  corresponding = 0;
+  return eval_.projectOnce(M, u, w, &corresponding, enough);
+}
+
+void FaceMesher::sampleEdge(const Corners& c, int i, double& worst, double& corresponding) const {
+  worst = -1, corresponding = -1;
+  for (const double f : {0.5, 0.25, 0.75}) {
+    if (f != 0.5 && !freeform_) break;
+    double b[3] = {0, 0, 0};
+    b[(i + 1) % 3] = f, b[(i + 2) % 3] = 1 - f;
+    double cd = 0;
+    worst = std::max(worst, sample(c, b, cd));
+    corresponding = std::max(corresponding, cd);
+  }
+}
+
+void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit, int stamp,
+                                  TriangleRecord& r, Pending& pending) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  const Corners c = corners(t, mesh);
+  const cet::VertexId* v = c.v;
+  const gp_Pnt* P = c.p;
   r = TriangleRecord{};
+  pending = Pending{};
   r.v[0] = v[0], r.v[1] = v[1], r.v[2] = v[2];
-  const double c = settings_.coincident;
-  const bool collapsed = P[0].IsEqual(P[1], c) || P[1].IsEqual(P[2], c) || P[0].IsEqual(P[2], c);
   double longest = 0, longestFree = 0;
   r.longestFreeEdge = 3;
   for (int i = 0; i < 3; ++i) {
@@ -382,8 +417,9 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     if (!m.isConstrained(t, i) && len > longestFree) longestFree = len, r.longestFreeEdge = static_cast<std::uint8_t>(i);
   }
   r.longest = static_cast<float>(longest);
+  pending.longest = longest;
 
-  if (!collapsed) {
+  if (!c.collapsed) {
     // Regularity: corner normals. Poles and apexes have no meaningful normal to compare, and the two
     // ends of a boundary segment are fixed by the edge discretisation: no interior point changes
     // them. Nor does any point change the normals' jump across a crease of the surface: an edge
@@ -392,13 +428,13 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     double minCos = 1;
     bool acrossCrease = false;
     for (int i = 0; i < 3; ++i) {
-      const cet::VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
-      if (eval_.crossesCrease(U[(i + 1) % 3], V[(i + 1) % 3], U[(i + 2) % 3], V[(i + 2) % 3])) {
+      const int a = (i + 1) % 3, b = (i + 2) % 3;
+      if (eval_.crossesCrease(c.u[a], c.w[a], c.u[b], c.w[b])) {
         acrossCrease = true;
         continue;
       }
-      if (singular_[a] || singular_[b] || m.isConstrained(t, i)) continue;
-      const double cosine = normal_[a].Dot(normal_[b]);
+      if (singular_[v[a]] || singular_[v[b]] || m.isConstrained(t, i)) continue;
+      const double cosine = normal_[v[a]].Dot(normal_[v[b]]);
       if (cosine < minCos) minCos = cosine, r.angleEdge = static_cast<std::uint8_t>(i);
     }
     r.normalCos = static_cast<float>(minCos);
@@ -425,58 +461,76 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
   // distance |S(uv) - M| at the same samples guards the other direction: a triangle whose UV region
   // maps far from it (spanning a seam, or collapsed on a pole with a whole sector behind it) does not
   // cover its part of the surface, however close its own points are.
-  double worst = -1, worstCorresponding = -1;
-  std::uint8_t worstCorrespondingSample = 0;
-  auto note = [&](double d, double corresponding, std::uint8_t id) {
-    if (d > worst) worst = d, r.worstSample = id;
-    if (corresponding > worstCorresponding) worstCorresponding = corresponding, worstCorrespondingSample = id;
-  };
-  // A sample whose own surface point is already within the final tolerance passes on every level
-  // (each is at least as coarse): no need to find its foot.
-  const double enough = kDeviationMargin * settings_.finalChordal;
-  auto sample = [&](double b0, double b1, double b2, double& d, double& corresponding) {
-    const double b[3] = {b0, b1, b2};
-    double u = 0, w = 0;
-    eval_.blend(3, b, U, V, u, w);
-    const gp_Pnt M(b0 * P[0].XYZ() + b1 * P[1].XYZ() + b2 * P[2].XYZ());
-    corresponding = 0;
-    d = collapsed ? eval_.point(u, w).Distance(M) : eval_.projectOnce(M, u, w, &corresponding, enough);
-    if (collapsed) corresponding = d;
-  };
-  double d = 0, corresponding = 0;
-  sample(1.0 / 3, 1.0 / 3, 1.0 / 3, d, corresponding);
-  note(d, corresponding, 0);
+  {
+    static const double kCentroid[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+    pending.worst = sample(c, kCentroid, pending.corresponding);
+  }
   if (freeform_) {
     // Free-form surfaces can bend inside a triangle between the centroid and the edge midpoints
     // (bumps narrower than the triangle): the barycentric grid of step 1/4 as the measurement uses,
     // reported as the nearest of the four split points.
     static const double kInner[3][3] = {{.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}};
     for (const auto& b : kInner) {
-      sample(b[0], b[1], b[2], d, corresponding);
-      note(d, corresponding, 0);
+      double cd = 0;
+      const double d = sample(c, b, cd);
+      pending.worst = std::max(pending.worst, d), pending.corresponding = std::max(pending.corresponding, cd);
     }
   }
   // Edge i runs between corners i+1 and i+2; a constrained edge is a boundary chord, already
   // within tolerance by the edge discretisation. An edge's samples (its midpoint; on free-form
   // surfaces also its quarter points) depend on the edge alone: the neighbour across it may have them.
+  // The neighbour measured in this pass too: a lower one first (its samples are taken when it is
+  // done, by finishTriangle), a higher one after this one (it takes these).
+  double* edgeWorst = pending.edgeWorst;
+  double* edgeCorresponding = pending.edgeCorresponding;
   for (int i = 0; i < 3; ++i) {
     if (m.isConstrained(t, i)) continue;
-    if (!collapsed && edgeSamplesFromNeighbour(t, i, r.edgeDeviation[i], r.edgeCorresponding[i])) {
-      note(r.edgeDeviation[i], r.edgeCorresponding[i], static_cast<std::uint8_t>(1 + i));
-      continue;
+    if (!c.collapsed) {
+      const cet::TriangleId n = m.neighbor(t, i);
+      const bool measuredNow = n != cet::kNoTriangle && n < measuredStamp_.size() && measuredStamp_[n] == stamp;
+      if (measuredNow && n < t) {
+        pending.deferred |= static_cast<std::uint8_t>(1u << i);
+        continue;
+      }
+      if (!measuredNow && edgeSamplesFromNeighbour(t, i, r.edgeDeviation[i], r.edgeCorresponding[i])) {
+        edgeWorst[i] = r.edgeDeviation[i], edgeCorresponding[i] = r.edgeCorresponding[i];
+        continue;
+      }
     }
-    double edgeWorst = -1, edgeCorresponding = -1;
-    for (const double f : {0.5, 0.25, 0.75}) {
-      if (f != 0.5 && !freeform_) break;
-      double b[3] = {0, 0, 0};
-      b[(i + 1) % 3] = f, b[(i + 2) % 3] = 1 - f;
-      sample(b[0], b[1], b[2], d, corresponding);
-      edgeWorst = std::max(edgeWorst, d), edgeCorresponding = std::max(edgeCorresponding, corresponding);
-    }
-    note(edgeWorst, edgeCorresponding, static_cast<std::uint8_t>(1 + i));
-    if (!collapsed) r.edgeDeviation[i] = static_cast<float>(edgeWorst), r.edgeCorresponding[i] = static_cast<float>(edgeCorresponding);
+    sampleEdge(c, i, edgeWorst[i], edgeCorresponding[i]);
+    if (!c.collapsed) r.edgeDeviation[i] = static_cast<float>(edgeWorst[i]), r.edgeCorresponding[i] = static_cast<float>(edgeCorresponding[i]);
   }
-  if (collapsed || worstCorresponding > longest) {
+  if (pending.deferred == 0) conclude(r, pending, c.collapsed);
+}
+
+void FaceMesher::finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const {
+  for (int i = 0; i < 3; ++i) {
+    if (!(pending.deferred >> i & 1u)) continue;
+    if (edgeSamplesFromNeighbour(t, i, r.edgeDeviation[i], r.edgeCorresponding[i])) {
+      pending.edgeWorst[i] = r.edgeDeviation[i], pending.edgeCorresponding[i] = r.edgeCorresponding[i];
+    } else {
+      sampleEdge(corners(t, mesh), i, pending.edgeWorst[i], pending.edgeCorresponding[i]);
+      r.edgeDeviation[i] = static_cast<float>(pending.edgeWorst[i]);
+      r.edgeCorresponding[i] = static_cast<float>(pending.edgeCorresponding[i]);
+    }
+  }
+  conclude(r, pending, false);
+}
+
+void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collapsed) {
+  const double* edgeWorst = pending.edgeWorst;
+  const double* edgeCorresponding = pending.edgeCorresponding;
+  // Ties go to the first sample in the order centroid (and interior), edge 0, 1, 2.
+  double worst = pending.worst, worstCorresponding = pending.corresponding;
+  std::uint8_t worstSample = 0, worstCorrespondingSample = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (edgeWorst[i] < 0) continue;  // constrained: not sampled
+    if (edgeWorst[i] > worst) worst = edgeWorst[i], worstSample = static_cast<std::uint8_t>(1 + i);
+    if (edgeCorresponding[i] > worstCorresponding)
+      worstCorresponding = edgeCorresponding[i], worstCorrespondingSample = static_cast<std::uint8_t>(1 + i);
+  }
+  r.worstSample = worstSample;
+  if (collapsed || worstCorresponding > pending.longest) {
     worst = worstCorresponding;
     r.worstSample = worstCorrespondingSample;
   }
@@ -665,16 +719,50 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
     splitTriangles_.clear();
     const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
     nextWork_.clear();
-    auto visit = [&](cet::TriangleId t) {
-      if (m.isGhost(t) || m.isOutside(t)) return;
+    // The first pass looks at every triangle (the tolerances are new); later ones only at the
+    // triangles the previous pass changed (all incident to its new vertices: insertion and Lawson's
+    // flips only make triangles around the inserted point) and those it put off, in id order: a
+    // triangle that needs no split has no effect on the others, so this is the full scan's result.
+    visit_.clear();
+    if (pass == 0) {
+      for (cet::TriangleId t = 0; t < triangles; ++t)
+        if (!m.isGhost(t) && !m.isOutside(t)) visit_.push_back(t);
+    } else {
+      std::sort(work_.begin(), work_.end());
+      work_.erase(std::unique(work_.begin(), work_.end()), work_.end());
+      for (const cet::TriangleId t : work_)
+        if (!m.isGhost(t) && !m.isOutside(t)) visit_.push_back(t);
+    }
+    // Triangles without a current record are measured, in parallel where the run has idle workers.
+    measured_.clear();
+    if (measuredStamp_.size() < triangles) measuredStamp_.resize(triangles, -1);
+    for (const cet::TriangleId t : visit_) {
       const TriangleRecord* r = records_.find(t, m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2));
-      TriangleRecord fresh;
-      if (r && (r->flags & TriangleRecord::kUnmeasured) && !angleSplit.splits(*r)) r = nullptr;  // a looser angle now
-      if (!r) {
-        evaluateTriangle(t, mesh, angleSplit, fresh);
-        records_.store(t, fresh);
-        r = &fresh;
+      if (!r || ((r->flags & TriangleRecord::kUnmeasured) && !angleSplit.splits(*r))) {  // (a looser angle now)
+        measured_.push_back(t);
+        measuredStamp_[t] = stamp;
       }
+    }
+    records_.reserve(triangles);
+    pending_.resize(measured_.size());
+    const std::function<void(std::size_t, std::size_t)> measure = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        evaluateTriangle(measured_[i], mesh, angleSplit, stamp, records_.at(measured_[i]), pending_[i]);
+    };
+    const std::function<void(std::size_t, std::size_t)> finish = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (pending_[i].deferred) finishTriangle(measured_[i], mesh, records_.at(measured_[i]), pending_[i]);
+    };
+    if (settings_.sharing && eval_.concurrentSafe()) {
+      settings_.sharing->forEach(measured_.size(), kMeasureGrain, measure);
+      settings_.sharing->forEach(measured_.size(), kMeasureGrain, finish);
+    } else {
+      measure(0, measured_.size());
+      finish(0, measured_.size());
+    }
+
+    for (const cet::TriangleId t : visit_) {
+      const TriangleRecord* r = &records_.at(t);
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1;
       if (r->deviation > chordal && (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed))) {
@@ -689,13 +777,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         // thinner ones).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
       }
-      if (at < 0) return;
+      if (at < 0) continue;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
       // pass crowd each other and leave slivers that need more points.
       if (touched_.size() < m.vertexCount()) touched_.resize(m.vertexCount(), -1);
       if (touched_[m.vertex(t, 0)] == stamp || touched_[m.vertex(t, 1)] == stamp || touched_[m.vertex(t, 2)] == stamp) {
         nextWork_.push_back(t);  // again next pass
-        return;
+        continue;
       }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
@@ -716,7 +804,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // as its apex, and the triangle they make on the chord is flipped as well, as long as the
       // chord itself: a cascade towards the boundary that no size test stops.
       const bool override = tooFar || (flipped && r->longest > level.chordal && !onChord(t));
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) return;
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) continue;
       if (kDebugRefine) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalCos, r->longest, r->flags, u, v);
@@ -724,22 +812,11 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // A point the predicates cannot handle is no split: refinement towards a corner (a pole, a
       // sliver) must not end in underflowing coordinates.
       const cet::Point2 q = scaled(u, v);
-      if (!supported(q)) return;
+      if (!supported(q)) continue;
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
       uvs.emplace_back(u, v);
       points_.push_back(q);
       splitTriangles_.push_back(t);
-    };
-    // The first pass looks at every triangle (the tolerances are new); later ones only at the
-    // triangles the previous pass changed (all incident to its new vertices: insertion and Lawson's
-    // flips only make triangles around the inserted point) and those it put off, in id order: a
-    // triangle that needs no split has no effect on the others, so this is the full scan's result.
-    if (pass == 0) {
-      for (cet::TriangleId t = 0; t < triangles; ++t) visit(t);
-    } else {
-      std::sort(work_.begin(), work_.end());
-      work_.erase(std::unique(work_.begin(), work_.end()), work_.end());
-      for (const cet::TriangleId t : work_) visit(t);
     }
     if (points_.empty()) return true;
     const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());

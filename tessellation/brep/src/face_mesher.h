@@ -22,6 +22,7 @@
 namespace cetview::brep {
 
 class EdgeTable;
+class WorkSharing;
 
 // Refinement (of edges and of triangles) aims below each tolerance by this factor: the samples see
 // most, not all, of a segment's or triangle's deviation (a quadratic deviation peaks within ~15% of
@@ -35,6 +36,9 @@ struct FaceMesherSettings {
   // Vertices closer than this are one point (poles, singular rows of a B-spline, bridged UV gaps):
   // triangles with two of them have no area and are dropped from the output.
   double coincident = 0;
+  // The run's idle workers, which a large refinement pass shares its measuring with (null: alone).
+  // Meshes do not depend on it.
+  WorkSharing* sharing = nullptr;
 };
 
 class FaceMesher {
@@ -74,8 +78,34 @@ class FaceMesher {
   // or, when p is null, the surface point.
   void appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* p);
   cet::Point2 scaled(double u, double v) const { return eval_.scaled(u, v); }
+  // Measuring a pass's triangles. Each new triangle of a pass (in `measured_`, stamped in
+  // measuredStamp_) is measured into its record, in parallel; an edge shared with a lower triangle of
+  // the same pass takes that triangle's samples afterwards (finishTriangle), so records are exactly
+  // those of measuring one triangle after the other in id order, on any number of threads.
+  struct Corners {
+    cet::VertexId v[3];
+    gp_Pnt p[3];
+    double u[3], w[3];
+    bool collapsed = false;  // two corners on one 3D point
+  };
+  struct Pending {            // what evaluateTriangle leaves for finishTriangle
+    double worst = -1, corresponding = -1;  // the interior samples' largest distances
+    double edgeWorst[3] = {-1, -1, -1}, edgeCorresponding[3] = {-1, -1, -1};  // -1: constrained, or deferred
+    double longest = 0;
+    std::uint8_t deferred = 0;  // bit i: edge i waits for the lower triangle across it
+  };
+  Corners corners(cet::TriangleId t, const FaceMesh& mesh) const;
+  // Distance from the point of the flat triangle at barycentric b to the surface (and the
+  // corresponding-point distance |S(uv) - M|).
+  double sample(const Corners& c, const double b[3], double& corresponding) const;
+  // Worst samples of edge i: its midpoint (and quarter points on free-form surfaces).
+  void sampleEdge(const Corners& c, int i, double& worst, double& corresponding) const;
   // Measures triangle t into r; chordal samples are skipped when angleSplit splits it anyway.
-  void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit, TriangleRecord& r) const;
+  void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit, int stamp,
+                        TriangleRecord& r, Pending& pending) const;
+  void finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const;
+  // The record's deviation and worst sample from its samples (interior ones in `pending`).
+  static void conclude(TriangleRecord& r, const Pending& pending, bool collapsed);
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
   bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
@@ -123,6 +153,10 @@ class FaceMesher {
   std::vector<cet::TriangleId> work_, nextWork_;   // triangles a refinement pass looks at (after the first)
   std::vector<cet::InsertOutcome> outcomes_;
   std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
+  std::vector<cet::TriangleId> visit_;     // a pass's triangles, in id order
+  std::vector<cet::TriangleId> measured_;  // those of them without a current record
+  std::vector<Pending> pending_;           // per measured_ entry
+  std::vector<int> measuredStamp_;         // per triangle: the pass that measures it
   int passStamp_ = 0;         // counts passes over all levels
 };
 

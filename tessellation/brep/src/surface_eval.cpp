@@ -20,6 +20,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
     while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis)) basis = trimmed->BasisSurface();
     direct_ = BSplineDirect::create(Handle(Geom_BSplineSurface)::DownCast(basis), location.Transformation());
   }
+  concurrentSafe_ = direct_ || elementary_.valid();
   uPeriodic_ = surface_.IsUPeriodic();
   vPeriodic_ = surface_.IsVPeriodic();
   su0_ = surface_.FirstUParameter(), su1_ = surface_.LastUParameter();
@@ -201,29 +202,15 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
   return false;
 }
 
-bool SurfaceEval::cached(double u, double v, int& iu, int& iv) const {
-  if (!direct_) return true;
-  iu = direct_->uSpan(u), iv = direct_->vSpan(v);
-  if (iu == cachedU_ && iv == cachedV_) return true;
-  if (iu != lastU_ || iv != lastV_) lastU_ = iu, lastV_ = iv, run_ = 0;
-  if (++run_ <= kDirectRun) return false;
-  cachedU_ = iu, cachedV_ = iv;  // a run of points in this span: the cache moves here
-  return true;
-}
-
 void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {
-  int iu = 0, iv = 0;
-  if (cached(u, v, iu, iv)) {
-    surface_.D1(u, v, p, du, dv);
+  if (direct_) {
+    direct_->d1(u, v, p, du, dv);
   } else {
-    direct_->d1(u, v, iu, iv, p, du, dv);
+    surface_.D1(u, v, p, du, dv);
   }
 }
 
-gp_Pnt SurfaceEval::point(double u, double v) const {
-  int iu = 0, iv = 0;
-  return cached(u, v, iu, iv) ? surface_.Value(u, v) : direct_->value(u, v, iu, iv);
-}
+gp_Pnt SurfaceEval::point(double u, double v) const { return direct_ ? direct_->value(u, v) : surface_.Value(u, v); }
 
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;

@@ -25,6 +25,10 @@ class SurfaceEval {
   const BRepAdaptor_Surface& adaptor() const { return surface_; }
   // A B-spline face's direct evaluator (immutable: may be shared with other threads), or null.
   const std::shared_ptr<const BSplineDirect>& direct() const { return direct_; }
+  // True when point(), projectOnce(), blend() and crossesCrease() may be called from several threads
+  // at once: planes, cylinders, cones, spheres and tori (closed forms) and B-splines evaluated
+  // directly. Other surfaces go through OpenCASCADE's adaptor and its mutable caches.
+  bool concurrentSafe() const { return concurrentSafe_; }
 
   // Point and unit natural normal (Su x Sv) at (u, v). Returns false where the normal is not
   // defined by first derivatives (poles, apexes); the normal then comes from higher derivatives or
@@ -98,22 +102,18 @@ class SurfaceEval {
   void buildAxis(bool uDir, Axis& axis) const;
   Axis uAxis_, vAxis_;
 
-  // Evaluation: B-spline points outside OpenCASCADE's cached span go to a direct evaluator
-  // (bspline_direct.h) until kDirectRun of them in a row have fallen in one span: the cache then
-  // moves there (a rebuild costs about as much as that many direct evaluations more than cached ones).
-  static constexpr int kDirectRun = 8;
+  // Evaluation: B-spline faces go to the direct evaluator (bspline_direct.h) for every point; it
+  // keeps no state, so one SurfaceEval of such a face serves several threads at once (see
+  // concurrentSafe()), and a point's value does not depend on which points came before it.
   void d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const;
-  bool cached(double u, double v, int& iu, int& iv) const;  // false: evaluate directly in spans (iu, iv)
   std::shared_ptr<const BSplineDirect> direct_;
-  mutable int cachedU_ = -1, cachedV_ = -1;  // the span pair OpenCASCADE's cache holds
-  mutable int lastU_ = -1, lastV_ = -1;      // the span pair of the last direct evaluation
-  mutable int run_ = 0;  // direct evaluations in a row in it
 
   BRepAdaptor_Surface surface_;
   ElementaryDistance elementary_;  // planes, cylinders, cones, spheres, tori
   TopoDS_Face face_;
   mutable Handle(Geom_Surface) geom_;  // with the face's location applied, made when first needed (normals at poles)
   bool uPeriodic_ = false, vPeriodic_ = false;
+  bool concurrentSafe_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
   double meanLu_ = 0, meanLv_ = 0;                 // mean |Su|, |Sv| over the face
   std::vector<double> uCreases_, vCreases_;        // parameters of the crease lines, increasing

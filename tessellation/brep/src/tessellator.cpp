@@ -146,6 +146,7 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
         settings.finalAngle = t.angle;
         settings.coincident = 1e-10 * t.model.bounds().diagonal();
         settings.reversed = t.model.faces()[face].reversed;
+        settings.sharing = &t.sharing;
         s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings, std::move(s.eval));
       }
       const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh,
@@ -198,6 +199,10 @@ void TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::strin
 
 void Tessellator::failFaceForTesting(FaceId face) { impl_->faces[face].injectFailure = true; }
 
+void Tessellator::runWorkers(unsigned threads, const std::function<void(unsigned)>& work) {
+  impl_->sharing.run(threads, work);
+}
+
 bool Tessellator::run(unsigned threads, const ProgressFn& progress, const std::atomic<bool>* cancel, int lastLevelWanted) {
   const int last = lastLevelWanted < 0 ? lastLevel() : std::min(lastLevelWanted, lastLevel());
   for (int k = edgeLevel() + 1; k <= last; ++k)
@@ -206,10 +211,13 @@ bool Tessellator::run(unsigned threads, const ProgressFn& progress, const std::a
   std::atomic<std::size_t> done{0};
   std::atomic<bool> cancelled{false};
   // Faces are independent once the edges are there: each runs through all its levels at once.
-  parallelFor(total, threads, [&](std::size_t f, unsigned worker) {
-    if (advanceFace(static_cast<FaceId>(f), last, cancel) == FaceStatus::kCancelled) cancelled = true;
-    const std::size_t d = ++done;
-    if (worker == 0 && progress) progress(d, total);
+  std::atomic<std::size_t> next{0};
+  runWorkers(threads, [&](unsigned worker) {
+    for (std::size_t i = next++; i < total; i = next++) {
+      if (advanceFace(static_cast<FaceId>(i), last, cancel) == FaceStatus::kCancelled) cancelled = true;
+      const std::size_t d = ++done;
+      if (worker == 0 && progress) progress(d, total);
+    }
   });
   if (progress && !cancelled) progress(total, total);
   return !cancelled && !(cancel && cancel->load());

@@ -8,6 +8,7 @@
 #include "brep/tessellator.h"
 #include "edge_table.h"
 #include "face_mesher.h"
+#include "work_sharing.h"
 
 namespace cetview::brep {
 
@@ -33,6 +34,7 @@ class TessellatorImpl {
   std::atomic<int> edgeLevel{-1};
   std::vector<FaceState> faces;
   bool surfacesReady = false;  // prepareSurfaces() has completed
+  WorkSharing sharing;         // runWorkers()' idle workers, lent to the faces' refinement passes
 
   // Every face's SurfaceEval, with `threads` threads, and the edges' face scales from them: the
   // first level's edges need the scales, its faces the evaluators. Returns false when cancelled

@@ -56,6 +56,12 @@ class TriangleRecords {
     if (t >= records_.size()) records_.resize(std::max<std::size_t>(t + 1, records_.size() * 3 / 2));
     records_[t] = record;
   }
+  // Makes room for triangle ids below `triangles`, so that at() on them moves nothing (threads
+  // may then fill distinct records at once).
+  void reserve(std::size_t triangles) {
+    if (triangles > records_.size()) records_.resize(std::max(triangles, records_.size() * 3 / 2));
+  }
+  TriangleRecord& at(cet::TriangleId t) { return records_[t]; }
   void clear() { std::vector<TriangleRecord>().swap(records_); }
 
  private:

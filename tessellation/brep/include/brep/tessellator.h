@@ -106,6 +106,13 @@ class Tessellator {
   const FaceMesh& faceMesh(FaceId face) const;
   FaceReport report(FaceId face) const;
 
+  // Runs work(worker) for every worker in [0, threads) on that many threads (worker 0 is the
+  // calling thread) and returns when all have returned; for callers that hand faces to workers
+  // themselves (advanceFace inside `work`). A worker whose call has returned helps the others: a
+  // large face's refinement passes are shared out among idle workers. Meshes are the same for any
+  // number of threads. Not reentrant.
+  void runWorkers(unsigned threads, const std::function<void(unsigned worker)>& work);
+
   // All levels up to lastLevel (-1: the final one) for all faces with `threads` threads. Returns
   // false when cancelled.
   bool run(unsigned threads, const ProgressFn& progress = {}, const std::atomic<bool>* cancel = nullptr,
