@@ -2,7 +2,9 @@
 // the first complete frame and to each level, next to BRepMesh_IncrementalMesh's full tessellation
 // time at the same final deflection; bytes uploaded per frame; the longest frame while loading
 // against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU).
-//   progressive_bench [--threads N] [--deflection 0.1%] MODEL...   (MODEL: a file or "demo")
+//   progressive_bench [--threads N] [--deflection 0.1%] [--repeat R] [--no-brepmesh] MODEL...
+// (MODEL: a file or "demo"; --repeat loads each model R times, BRepMesh once; --no-brepmesh skips
+// the reference, for quick runs of the progressive side alone.)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -35,21 +37,24 @@ struct Row {
 };
 
 Row measure(const std::string& path, const cetview::brep::MeshParams& params, unsigned threads,
-            const cetview::engine::Device& device) {
+            const cetview::engine::Device& device, bool reference, double brepmeshMs) {
   namespace brep = cetview::brep;
   namespace engine = cetview::engine;
   Row row;
   row.model = path;
-  brep::BenchOptions bench;
-  bench.params = params;
-  bench.threads = 1;
-  bench.measure = false;
-  const brep::BenchResult reference = brep::benchModel(path, bench);
-  if (!reference.error.empty()) {
-    row.error = reference.error;
-    return row;
+  row.brepmesh = brepmeshMs;
+  if (reference) {
+    brep::BenchOptions bench;
+    bench.params = params;
+    bench.threads = 1;
+    bench.measure = false;
+    const brep::BenchResult result = brep::benchModel(path, bench);
+    if (!result.error.empty()) {
+      row.error = result.error;
+      return row;
+    }
+    row.brepmesh = result.brepmesh_ms;
   }
-  row.brepmesh = reference.brepmesh_ms;
 
   // The window is open before a model loads: the renderer (and its pipelines, which lavapipe
   // compiles when they are created and, for their machine code, at their first draw: warmUp())
@@ -130,9 +135,15 @@ int main(int argc, char** argv) {
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   brep::MeshParams params;
   std::vector<std::string> models;
+  int repeat = 1;
+  bool reference = true;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
+    } else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) {
+      repeat = std::max(1, std::atoi(argv[++i]));
+    } else if (!std::strcmp(argv[i], "--no-brepmesh")) {
+      reference = false;
     } else if (!std::strcmp(argv[i], "--deflection") && i + 1 < argc) {
       if (std::string e = brep::parseDeflection(argv[++i], params.chordal); !e.empty()) {
         std::fprintf(stderr, "progressive_bench: %s\n", e.c_str());
@@ -156,8 +167,11 @@ int main(int argc, char** argv) {
   std::printf("device: %s, %u tessellation thread(s), 1280x720\n", device->name.c_str(), threads);
   std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %9s %11s  %s\n", "model", "faces", "brepmesh ms", "1st frame",
               "ratio", "final ms", "max frame ms", "idle ms", "MB/frame", "max MB/frm", "ms per level");
-  for (const std::string& m : models) {
-    const Row row = measure(m, params, threads, *device);
+  for (int run = 0; run < repeat * static_cast<int>(models.size()); ++run) {
+    const std::string& m = models[static_cast<std::size_t>(run / repeat)];
+    static double brepmeshMs = 0;  // of this model's first run
+    const Row row = measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs);
+    brepmeshMs = row.brepmesh;
     const std::string name = m.size() > 34 ? "..." + m.substr(m.size() - 31) : m;
     if (!row.error.empty()) {
       std::printf("%-34s error: %s\n", name.c_str(), row.error.c_str());
