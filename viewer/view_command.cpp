@@ -189,7 +189,19 @@ class Viewer {
   std::size_t scriptNext_ = 0;
   int waitFrames_ = 0;
   int waitLevel_ = -2;  // -2: not waiting; -1: the slider's level; else that level
+  std::chrono::steady_clock::time_point waitUntil_{};  // 'wait seconds': the script idles until then
+  bool waitingSeconds_ = false;
+  std::uint64_t framesWhileWaitingSeconds_ = 0;
   int exitCode_ = 0;
+
+  // Redraw on change: a frame is drawn when something it shows may have changed; otherwise the
+  // loop sleeps in glfwWaitEventsTimeout, leaving the cores to the tessellation workers (and the
+  // battery alone when the model is still).
+  bool frameNeeded();
+  std::uint64_t seenEvents_ = ~std::uint64_t{0};
+  int settleFrames_ = 0;  // frames still drawn after the last window event (ImGui settles over a few)
+  int drawnLevel_ = -2;   // the complete level when the last frame was drawn
+  std::chrono::steady_clock::time_point lastDrawn_{};
 };
 
 glm::vec2 Viewer::viewport() const {
@@ -638,10 +650,36 @@ void Viewer::updateHeatMap() {
   if (live_->showHeatMap(cli_.threads, &heatWorst_)) heatLevel_ = live_->targetLevel();
 }
 
+bool Viewer::frameNeeded() {
+  constexpr int kSettleFrames = 3;
+  const auto now = std::chrono::steady_clock::now();
+  const std::uint64_t events = glue_.inputEvents();
+  if (events != seenEvents_) seenEvents_ = events, settleFrames_ = kSettleFrames;
+  if (settleFrames_ > 0) {
+    --settleFrames_;
+    return true;
+  }
+  const int complete = live_->consumer().completeLevel();
+  if (complete != drawnLevel_) {
+    drawnLevel_ = complete;
+    return true;
+  }
+  const bool scriptBusy = waitFrames_ > 0 || waitLevel_ != -2 || (waitingSeconds_ && now >= waitUntil_) ||
+                          (!waitingSeconds_ && scriptNext_ < script_.size());
+  // While the model loads, the progress panel's clock moves even when no face has finished.
+  const bool progressTick = !live_->idle() && now - lastDrawn_ > std::chrono::milliseconds(250);
+  return frame_ < kSettleFrames || r_.scene().uploadsPending() || camera_.animating() || scriptBusy ||
+         cli_.frames > 0 || !pendingScreenshot_.empty() || !pendingOpen_.empty() || quit_ || progressTick;
+}
+
 bool Viewer::stepScript() {
   if (waitFrames_ > 0) {
     --waitFrames_;
     return true;
+  }
+  if (waitingSeconds_) {
+    if (std::chrono::steady_clock::now() < waitUntil_) return true;
+    waitingSeconds_ = false;
   }
   if (waitLevel_ != -2) {
     const int level = waitLevel_ == -1 ? live_->targetLevel() : std::min(waitLevel_, live_->lastLevel());
@@ -726,6 +764,10 @@ bool Viewer::stepScript() {
     if (c.args[0] == "frames") {
       if (!number(c.args[1], a) || a < 0 || a > 1e6) return bad("'wait frames' takes 0 to 1000000");
       waitFrames_ = static_cast<int>(a);
+    } else if (c.args[0] == "seconds") {
+      if (!number(c.args[1], a) || a < 0 || a > 3600) return bad("'wait seconds' takes 0 to 3600");
+      waitingSeconds_ = true;
+      waitUntil_ = std::chrono::steady_clock::now() + std::chrono::microseconds(static_cast<long long>(a * 1e6));
     } else if (c.args[1] == "target") {
       waitLevel_ = -1;
     } else {
@@ -777,15 +819,15 @@ int Viewer::run() {
 
   auto previous = std::chrono::steady_clock::now();
   int extraFrames = 0;  // frames spent retrying a screenshot of a skipped (out-of-date) frame
+  bool slept = false;   // the last pass drew nothing
   while (true) {
-    glfwPollEvents();
+    if (slept) {
+      // Wakes on any window event; while the model loads, soon enough to pick up what arrives.
+      glfwWaitEventsTimeout(live_->idle() ? 0.1 : 0.004);
+    } else {
+      glfwPollEvents();
+    }
     if (glfwWindowShouldClose(glue_.window())) quit_ = true;
-    const auto now = std::chrono::steady_clock::now();
-    const double dt = std::chrono::duration<double>(now - previous).count();
-    previous = now;
-    lastFrameMs_ = dt * 1000.0;
-    frameTimes_.push_back(dt);
-    if (frameTimes_.size() > 60) frameTimes_.pop_front();
 
     if (!pendingOpen_.empty()) {
       const std::string path = std::move(pendingOpen_);
@@ -799,6 +841,22 @@ int Viewer::run() {
     }
     live_->poll(kPollBytesPerFrame);
     reportFaceProblems();
+    if (!frameNeeded()) {
+      slept = true;
+      continue;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    // After a sleep the time since the last frame is no frame time.
+    const double dt = slept ? 0.0 : std::chrono::duration<double>(now - previous).count();
+    previous = now;
+    if (!slept) {
+      lastFrameMs_ = dt * 1000.0;
+      frameTimes_.push_back(dt);
+      if (frameTimes_.size() > 60) frameTimes_.pop_front();
+    }
+    slept = false;
+    lastDrawn_ = now;
+    if (waitingSeconds_) ++framesWhileWaitingSeconds_;
     // The triangles' box once they exist (a file's B-rep box can miss instances), else the model's.
     const engine::Bounds sceneBounds = r_.scene().bounds();
     camera_.setBounds(sceneBounds.empty() ? live_->modelScene().bounds() : sceneBounds);
@@ -872,9 +930,10 @@ int Viewer::run() {
     const unsigned long long levelTriangles =
         target < static_cast<int>(stats.size()) ? stats[static_cast<std::size_t>(target)].triangles : 0;
     std::printf(
-        "{\"frames\":%llu,\"target_level\":%d,\"complete_level\":%d,\"tolerance\":%.6g,"
+        "{\"frames\":%llu,\"frames_while_waiting_seconds\":%llu,\"target_level\":%d,\"complete_level\":%d,\"tolerance\":%.6g,"
         "\"shown_triangles\":%llu,\"level_triangles\":%llu}\n",
-        static_cast<unsigned long long>(frame_), target, live_->consumer().completeLevel(),
+        static_cast<unsigned long long>(frame_), static_cast<unsigned long long>(framesWhileWaitingSeconds_), target,
+        live_->consumer().completeLevel(),
         live_->levelTolerance(target), static_cast<unsigned long long>(live_->consumer().shownTriangles()),
         levelTriangles);
   }

@@ -49,8 +49,8 @@ ScriptParse parseScript(const std::string& text, const std::string& fileName) {
                   " argument(s), not " + std::to_string(n);
       return out;
     }
-    if (cmd.name == "wait" && cmd.args[0] != "level" && cmd.args[0] != "frames") {
-      out.error = where + "'wait' needs 'level K|target' or 'frames N'";
+    if (cmd.name == "wait" && cmd.args[0] != "level" && cmd.args[0] != "frames" && cmd.args[0] != "seconds") {
+      out.error = where + "'wait' needs 'level K|target', 'frames N' or 'seconds S'";
       return out;
     }
     out.commands.push_back(std::move(cmd));

@@ -12,6 +12,7 @@
 //   orbit DX DY        pan DX DY          zoom STEPS      (pixels / wheel steps, at the window centre)
 //   wait level K|target                   until level K (or the slider's level) is complete and shown
 //   wait frames N
+//   wait seconds S                        S seconds, drawing only what changes (as when nobody scripts)
 //   screenshot FILE.png                   open FILE      quit
 #pragma once
 

@@ -1,5 +1,6 @@
 #include "window_glue.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -12,6 +13,23 @@
 
 namespace cetview {
 namespace {
+
+// Window events (input, resize, exposure) counted for inputEvents(). One window per process. The
+// callbacks are set before ImGui's backend, which installs its own and calls these from them.
+std::atomic<std::uint64_t> gEvents{0};
+void countEvent() { gEvents.fetch_add(1, std::memory_order_relaxed); }
+void installEventCounters(GLFWwindow* w) {
+  glfwSetCursorPosCallback(w, [](GLFWwindow*, double, double) { countEvent(); });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow*, int, int, int) { countEvent(); });
+  glfwSetScrollCallback(w, [](GLFWwindow*, double, double) { countEvent(); });
+  glfwSetKeyCallback(w, [](GLFWwindow*, int, int, int, int) { countEvent(); });
+  glfwSetCharCallback(w, [](GLFWwindow*, unsigned int) { countEvent(); });
+  glfwSetWindowFocusCallback(w, [](GLFWwindow*, int) { countEvent(); });
+  glfwSetCursorEnterCallback(w, [](GLFWwindow*, int) { countEvent(); });
+  glfwSetFramebufferSizeCallback(w, [](GLFWwindow*, int, int) { countEvent(); });
+  glfwSetWindowRefreshCallback(w, [](GLFWwindow*) { countEvent(); });
+  glfwSetWindowIconifyCallback(w, [](GLFWwindow*, int) { countEvent(); });
+}
 
 void checkImGuiVk(VkResult r) {
   if (r != VK_SUCCESS)
@@ -113,6 +131,7 @@ std::string WindowGlue::init(const WindowOptions& options) {
       c.z = std::pow(c.z, 2.2f);
     }
   }
+  installEventCounters(window_);
   if (!ImGui_ImplGlfw_InitForVulkan(window_, true)) return "ImGui's GLFW backend did not initialise";
   imguiGlfw_ = true;
 
@@ -209,5 +228,7 @@ void WindowGlue::newImGuiFrame() {
 void WindowGlue::finishImGuiFrame() {
   ImGui::Render();
 }
+
+std::uint64_t WindowGlue::inputEvents() const { return gEvents.load(std::memory_order_relaxed); }
 
 }  // namespace cetview

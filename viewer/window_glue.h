@@ -5,6 +5,7 @@
 // API and ImGui's plain calls.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -40,6 +41,10 @@ class WindowGlue {
   engine::Renderer& renderer() { return *renderer_; }
   const engine::Device& device() const { return device_; }
   std::uint32_t validationCount() const { return instance_.log ? instance_.log->count() : 0; }
+
+  // Window events so far (mouse, keys, scroll, focus, resize, exposure, minimise): a change means
+  // the next frame is worth drawing.
+  std::uint64_t inputEvents() const;
 
   // Starts an ImGui frame (both backends, then ImGui::NewFrame()).
   void newImGuiFrame();

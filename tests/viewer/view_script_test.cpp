@@ -30,8 +30,9 @@ TEST(ViewScript, ParsesCommandsAndSkipsComments) {
 TEST(ViewScript, RejectsUnknownCommandsAndWrongArgumentCounts) {
   EXPECT_EQ(parseScript("spin 3\n", "s.txt").error, "s.txt:1: unknown command 'spin'");
   EXPECT_EQ(parseScript("fit\nview\n", "s.txt").error, "s.txt:2: 'view' takes 1 argument(s), not 0");
-  EXPECT_EQ(parseScript("wait seconds 3\n", "s.txt").error,
-            "s.txt:1: 'wait' needs 'level K|target' or 'frames N'");
+  EXPECT_EQ(parseScript("wait minutes 3\n", "s.txt").error,
+            "s.txt:1: 'wait' needs 'level K|target', 'frames N' or 'seconds S'");
+  EXPECT_TRUE(parseScript("wait seconds 3\n", "s.txt").error.empty());
   EXPECT_FALSE(loadScript("/nonexistent/script.txt").error.empty());
 }
 

@@ -197,6 +197,20 @@ TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
   EXPECT_NE(log.find("/nonexistent/model.step"), std::string::npos) << log;
 }
 
+// Once the model is shown and nothing moves, the viewer stops drawing (redraw on change): over two
+// still seconds it draws a few settling frames, where drawing every pass would draw a hundred or more.
+TEST_F(ViewerWindowTest, StillModelIsNotRedrawn) {
+  const std::string script = writeScript("still.script",
+                                         "wait level target\n"
+                                         "wait seconds 2\n"
+                                         "quit\n");
+  std::string log;
+  ASSERT_EQ(runViewer("view demo --size 640x400 --threads 2 --script " + script, log), 0) << log;
+  expectWholeLevelShown(log);
+  EXPECT_LE(jsonNumber(log, "frames_while_waiting_seconds"), 8) << log;
+  EXPECT_GE(jsonNumber(log, "frames_while_waiting_seconds"), 0) << log;
+}
+
 // One bad face (a bow-tie wire) is reported by id and reason on the terminal, and the rest of the
 // model shows.
 TEST_F(ViewerWindowTest, BadFaceIsReportedAndTheRestShows) {
