@@ -1,7 +1,8 @@
 // Progressive loading against BRepMesh, side by side in one run (DESIGN.md "Benchmarks"): time to
 // the first complete frame and to each level, next to BRepMesh_IncrementalMesh's full tessellation
 // time at the same final deflection; bytes uploaded per frame; the longest frame while loading
-// against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU).
+// against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU);
+// like the window, the loop draws a frame only when something new arrived.
 //   progressive_bench [--threads N] [--deflection 0.1%] [--repeat R] [--no-brepmesh] MODEL...
 // (MODEL: a file or "demo"; --repeat loads each model R times, BRepMesh once; --no-brepmesh skips
 // the reference, for quick runs of the progressive side alone.)
@@ -92,9 +93,17 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   std::size_t frames = 0;
   double bytes = 0;
   int seen = -1;
+  int drawnLevel = -2;  // the complete level at the last frame
   for (;;) {
     const auto frameStart = Clock::now();
-    consumer.poll(std::size_t{64} << 20, link);
+    const std::size_t polled = consumer.poll(std::size_t{64} << 20, link);
+    // As the window does (redraw on change): a frame only when there is something new to show;
+    // otherwise the cores are left to the workers for a moment.
+    if (frames > 0 && polled == 0 && consumer.completeLevel() == drawnLevel && !r.scene().uploadsPending()) {
+      std::this_thread::sleep_for(std::chrono::microseconds(500));
+      continue;
+    }
+    drawnLevel = consumer.completeLevel();
     auto status = r.drawFrame(camera);
     if (!status) {
       row.error = status.error().message;
