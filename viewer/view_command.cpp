@@ -668,8 +668,12 @@ bool Viewer::frameNeeded() {
                           (!waitingSeconds_ && scriptNext_ < script_.size());
   // While the model loads, the progress panel's clock moves even when no face has finished.
   const bool progressTick = !live_->idle() && now - lastDrawn_ > std::chrono::milliseconds(250);
+  // The heat map is measured on a drawn frame once the workers are done (updateHeatMap), which
+  // may be after the frame that showed the level complete.
+  const bool heatMapDue = heatMap_ && heatLevel_ != live_->targetLevel() && live_->idle();
   return frame_ < kSettleFrames || r_.scene().uploadsPending() || camera_.animating() || scriptBusy ||
-         cli_.frames > 0 || !pendingScreenshot_.empty() || !pendingOpen_.empty() || quit_ || progressTick;
+         cli_.frames > 0 || !pendingScreenshot_.empty() || !pendingOpen_.empty() || quit_ || progressTick ||
+         heatMapDue;
 }
 
 bool Viewer::stepScript() {

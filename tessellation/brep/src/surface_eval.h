@@ -88,8 +88,6 @@ class SurfaceEval {
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
 
-
-
   // One direction's scaling: x = x[k] + (t - t[k]) * slope[k] in span k (extended linearly past the
   // ends, repeated with the period when periodic). One span: x = (t - t[0]) * slope[0].
   struct Axis {

@@ -52,10 +52,6 @@ class TriangleRecords {
     const TriangleRecord& r = records_[t];
     return r.matches(a, b, c) ? &r : nullptr;
   }
-  void store(cet::TriangleId t, const TriangleRecord& record) {
-    if (t >= records_.size()) records_.resize(std::max<std::size_t>(t + 1, records_.size() * 3 / 2));
-    records_[t] = record;
-  }
   // Makes room for triangle ids below `triangles`, so that at() on them moves nothing (threads
   // may then fill distinct records at once).
   void reserve(std::size_t triangles) {
