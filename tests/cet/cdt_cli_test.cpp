@@ -13,8 +13,12 @@ namespace {
 
 using CliResult = cetview::test::CommandResult;
 
+// stderr goes to a file of the running test's own: ctest runs these tests as parallel processes,
+// and one shared file let a test read another's (empty) stderr.
 CliResult run(const std::string& args) {
-  return cetview::test::runCommand(std::string(CETVIEW_EXE) + " " + args, ::testing::TempDir() + "/cdt_cli_err.txt");
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return cetview::test::runCommand(std::string(CETVIEW_EXE) + " " + args,
+                                   ::testing::TempDir() + "/cdt_cli_" + test + ".err");
 }
 
 std::string write(const std::string& name, const std::string& text) {
