@@ -19,6 +19,10 @@
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <BRepLib.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -215,6 +219,53 @@ TEST(HardCases, RevolutionTouchingItsAxis) {
   wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 13), gp_Pnt(0, 0, 0)).Edge());
   const TopoDS_Face profile = BRepBuilderAPI_MakeFace(wire.Wire(), Standard_True).Face();
   checkAtSeveralDeflections(BRepPrimAPI_MakeRevol(profile, gp_Ax1(gp_Pnt(0, 0, 0), gp::DZ()), 2 * M_PI).Shape(), "egg");
+}
+
+// A face of `surface` bounded by the UV polygon `corners` (straight pcurves, 3D curves built).
+TopoDS_Face uvPolygonFace(const Handle(Geom_Surface)& surface, const std::vector<gp_Pnt2d>& corners) {
+  BRepBuilderAPI_MakeWire wire;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const gp_Pnt2d a = corners[i], b = corners[(i + 1) % corners.size()];
+    Handle(Geom2d_Line) line = new Geom2d_Line(a, gp_Dir2d(gp_Vec2d(a, b)));
+    wire.Add(BRepBuilderAPI_MakeEdge(line, surface, 0, a.Distance(b)).Edge());
+  }
+  TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, wire.Wire(), Standard_True).Face();
+  BRepLib::BuildCurves3d(face);
+  return face;
+}
+
+// Long thin strips of analytic surfaces, as chair tubes and fillets along long edges are, with ends
+// cut at a slant: their triangles run the length of the direction that bends slowly (straight, on
+// a cylinder), rather than fanning from end to end and filling the strip with points. With the UV
+// stretch capped at 10:1, the cylinder took 136 triangles and the torus 228.
+TEST(HardCases, ThinStripsRunAlongTheirLength) {
+  struct Strip {
+    const char* name;
+    TopoDS_Face face;
+    std::size_t most;
+  };
+  const Strip strips[] = {
+      // r = 0.5, 50 long: 90 degrees in steps of 20 or less at each end; two triangles per step.
+      {"quarter_cylinder",
+       uvPolygonFace(new Geom_CylindricalSurface(gp_Ax3(), 0.5), {{0, 0}, {M_PI / 2, 0.3}, {M_PI / 2, 49.5}, {0, 50}}),
+       2 * 8 + 2},
+      // R = 200, r = 0.5, 40 long: round the tube as the cylinder, along it the sag allows steps
+      // of ~3.7 (21:1).
+      {"torus_fillet",
+       uvPolygonFace(new Geom_ToroidalSurface(gp_Ax3(), 200, 0.5),
+                     {{0, 0}, {0.2, 0.2}, {0.2, M_PI / 2}, {0, M_PI / 2 - 0.3}}),
+       200},
+  };
+  for (const Strip& strip : strips) {
+    SCOPED_TRACE(strip.name);
+    auto model = test::loadShape(strip.face, strip.name);
+    ASSERT_TRUE(model);
+    auto t = test::tessellateAndCheck(*model, test::absolute(0.01));
+    ASSERT_TRUE(t);
+    const std::size_t triangles = t->triangleCount(t->lastLevel());
+    std::printf("%s: %zu triangles\n", strip.name, triangles);
+    EXPECT_LE(triangles, strip.most);
+  }
 }
 
 }  // namespace

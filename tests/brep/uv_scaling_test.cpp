@@ -1,8 +1,10 @@
 // SurfaceEval's UV scaling (tessellation/brep/src): each direction's scale is its mean 3D speed,
-// weighted by the square root of its curvature where the curvature is directional, so triangles run
-// along the flat direction. Checked on a torus (up to 10:1), on the same torus written as a B-spline
-// (a fillet as STEP files carry them: free-form, up to 3:1) and on a B-spline sheet curved one way
-// here and the other way there (no stretch).
+// weighted where the curvature is directional so that triangles run along the flat direction: by
+// the square root of the curvature without tolerances, by the steps the tolerances allow with
+// them. Checked on a torus (up to 10:1 without tolerances; a thin one much further with them), on
+// a cylinder (1000:1 with tolerances), on the same torus written as a B-spline (a fillet as STEP
+// files carry them: free-form, up to 3:1) and on a B-spline sheet curved one way here and the
+// other way there (no stretch).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +13,7 @@
 #include <GeomAPI_PointsToBSplineSurface.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -37,9 +40,9 @@ void meanSpeeds(const SurfaceEval& eval, double& lu, double& lv) {
 }
 
 // How much more the flat direction (u, along the tube) is stretched than the curved one.
-double stretch(const Handle(Geom_Surface)& surface) {
+double stretch(const Handle(Geom_Surface)& surface, double chordal = 0, double angleRad = 0) {
   const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7);
-  const SurfaceEval eval(face);
+  const SurfaceEval eval(face, chordal, angleRad);
   double lu = 0, lv = 0;
   meanSpeeds(eval, lu, lv);
   return (eval.sv / lv) / (eval.su / lu);
@@ -82,6 +85,26 @@ TEST(UvScaling, BSplineCurvedBothWaysIsNotStretched) {
   const Handle(Geom_BSplineSurface) sheet = GeomAPI_PointsToBSplineSurface(points).Surface();
   ASSERT_FALSE(sheet.IsNull());
   EXPECT_NEAR(stretch(sheet), 1.0, 1e-9);
+}
+
+TEST(UvScaling, WithTolerancesACylinderRunsAsFarAsAllowed) {
+  // Straight along v (so stretch(), which measures u against v, reads 1 / 1000): no tolerance
+  // limits a step that way, and the stretch stops at 1000:1.
+  const Handle(Geom_Surface) tube =
+      new Geom_RectangularTrimmedSurface(new Geom_CylindricalSurface(kFrame, 0.5), 0.0, M_PI / 2, 0.0, 50.0);
+  EXPECT_NEAR(stretch(tube, 0.01, 20 * M_PI / 180), 1e-3, 1e-12);
+}
+
+TEST(UvScaling, WithTolerancesAThinTorusRunsFurtherThanTenToOne) {
+  // R = 1000, r = 1, chordal 0.02, 20 degrees. Round the tube (k = 1) the angle allows 0.349; along
+  // it the sag allows sqrt(8 * 0.02 / k) with k = cos(v) / (R + cos(v)) largest at the grid's first
+  // row, v = pi / 20; the tilt bound sqrt(2 * 0.349 / k) is looser.
+  const Handle(Geom_Surface) patch =
+      new Geom_RectangularTrimmedSurface(new Geom_ToroidalSurface(kFrame, 1000, 1), 0.0, 0.05, 0.0, M_PI / 2);
+  const double k = std::cos(M_PI / 20) / (1000 + std::cos(M_PI / 20));
+  const double expected = std::sqrt(8 * 0.02 / k) / (20 * M_PI / 180);
+  EXPECT_GT(expected, 30.0);
+  EXPECT_NEAR(stretch(patch, 0.02, 20 * M_PI / 180), expected, 1e-6 * expected);
 }
 
 }  // namespace

@@ -56,7 +56,8 @@ bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && c
 FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings, std::unique_ptr<SurfaceEval> eval)
     : topology_(std::move(topology)),
       settings_(settings),
-      ownEval_(eval ? std::move(eval) : std::make_unique<SurfaceEval>(topology_.face)),
+      ownEval_(eval ? std::move(eval)
+                    : std::make_unique<SurfaceEval>(topology_.face, kDeviationMargin * settings.finalChordal, settings.finalAngle)),
       eval_(*ownEval_) {
   const GeomAbs_SurfaceType type = eval_.adaptor().GetType();
   // Ruled surfaces (planes, cylinders, cones) deviate from a triangle as a quadratic whose maximum

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -13,7 +14,7 @@
 
 namespace cetview::brep {
 
-SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_False), elementary_(surface_), face_(face) {
+SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRad) : surface_(face, Standard_False), elementary_(surface_), face_(face) {
   if (surface_.GetType() == GeomAbs_BSplineSurface) {
     TopLoc_Location location;  // applied to the poles (BRep_Tool::Surface(face) would copy the surface)
     Handle(Geom_Surface) basis = BRep_Tool::Surface(face, location);
@@ -31,7 +32,8 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   }
   u0 = uMin, v0 = vMin;
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
-  double lu = 0, lv = 0, ku = 0, kv = 0;
+  double lu = 0, lv = 0, ku = 0, kv = 0;  // means
+  double kuMax = 0, kvMax = 0;
   int n = 0;
   int uTurns = 0, vTurns = 0;  // grid points where one direction's curvature is 4x the other's
   for (int i = 0; i < 5; ++i) {
@@ -47,6 +49,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
         const gp_Vec nrm = c / c.Magnitude();
         const double pu = std::abs(duu.Dot(nrm)) / (mu * mu), pv = std::abs(dvv.Dot(nrm)) / (mv * mv);
         ku += pu, kv += pv;
+        kuMax = std::max(kuMax, pu), kvMax = std::max(kvMax, pv);
         if (pu > 4 * pv) ++uTurns;
         if (pv > 4 * pu) ++vTurns;
       }
@@ -58,10 +61,11 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   const double floor = 1e-9 * std::max({lu, lv, 1e-300});
   su = std::max(lu, floor);
   sv = std::max(lv, floor);
-  // Weigh each direction by the square root of its curvature, so the Delaunay criterion judges
-  // shapes by how fast the surface turns rather than by length (a chord's sagitta grows with
-  // curvature times length squared). A cylinder's triangles then run along its straight direction,
-  // as they should; the anisotropy is capped at 10:1 in length.
+  // Stretch the direction that bends less, so that the Delaunay criterion judges shapes by how far
+  // an edge may run each way rather than by length. On a curve of normal curvature k an edge of
+  // length h sags by k h^2 / 8 and turns by k h: the step each way goes as 1 / sqrt(k) by the sag
+  // alone, and with the tolerances known, as the tolerances allow. A cylinder's or cone's triangles
+  // then run the whole length of its straight direction, a thin torus's far along its tube.
   // Only where the curvature is directional by construction (cylinders, cones, linear extrusions:
   // straight in one direction; tori, whose fillets turn fast round the tube and slowly along it),
   // or on a free-form face where it is so at every grid point (a fillet or a tube written as a
@@ -71,13 +75,30 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face) : surface_(face, Standard_Fals
   const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion ||
                            type == GeomAbs_Torus;
   const bool freeformDirectional = !directional && (uTurns == n || vTurns == n);
-  const double kmax = std::max(ku, kv);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
-  if ((directional || freeformDirectional) && kmax * size > 1e-3) {
-    // 10:1 at most; 3:1 on free-form faces, whose curvature still varies along the stretch.
-    const double kfloor = (directional ? 1e-2 : 1.0 / 9) * kmax;
-    su *= std::sqrt(std::max(ku, kfloor) / kmax);
-    sv *= std::sqrt(std::max(kv, kfloor) / kmax);
+  if ((directional || freeformDirectional) && std::max(ku, kv) * size > 1e-3) {
+    double hu = 0, hv = 0, most = 0;
+    if (directional && chordal > 0 && angleRad > 0) {
+      // The largest curvature each way: the step must do where the surface bends most.
+      const auto step = [&](double k) { return k > 0 ? std::min(angleRad / k, std::sqrt(8 * chordal / k)) : HUGE_VAL; };
+      hu = step(kuMax), hv = step(kvMax);
+      // A triangle long one way and short the other tilts off the surface by about its sag along
+      // the long way over its width; a quarter of the width at most (about 15 degrees) leaves room
+      // for the Delaunay triangles that are longer or thinner than the steps. Further folded, the
+      // refinement takes them for slivers, and a sliver split on its long edge makes more.
+      if (kuMax > 0) hu = std::min(hu, std::sqrt(2 * hv / kuMax));
+      if (kvMax > 0) hv = std::min(hv, std::sqrt(2 * hu / kvMax));
+      most = 1e-3;  // 1000:1 at most: an analytic surface bends the same way all along it
+    } else {
+      const double kmin = 1e-300;
+      hu = 1 / std::sqrt(std::max(ku, kmin)), hv = 1 / std::sqrt(std::max(kv, kmin));
+      // 10:1 at most on analytic surfaces; 3:1 on free-form faces, whose curvature still varies along
+      // the stretch.
+      most = directional ? 0.1 : 1.0 / 3;
+    }
+    const double h = std::min(hu, hv);
+    su *= std::max(h / hu, most);
+    sv *= std::max(h / hv, most);
   }
   if (!(su > 0) || !std::isfinite(su)) su = 1;
   if (!(sv > 0) || !std::isfinite(sv)) sv = 1;

@@ -20,7 +20,9 @@ namespace cetview::brep {
 
 class SurfaceEval {
  public:
-  explicit SurfaceEval(const TopoDS_Face& face);
+  // `chordal` and `angleRad` (the finest tolerances the face will be meshed to; 0: unknown) set how
+  // far the scaled UV stretches a surface that bends more one way than the other (see scaled()).
+  explicit SurfaceEval(const TopoDS_Face& face, double chordal = 0, double angleRad = 0);
 
   const BRepAdaptor_Surface& adaptor() const { return surface_; }
   // A B-spline face's direct evaluator (immutable: may be shared with other threads), or null.
@@ -49,7 +51,8 @@ class SurfaceEval {
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
-  // shapes about as in 3D. On a B-spline surface whose knot spans run at very different 3D speeds
+  // shapes about as in 3D; on a surface that bends one way more than the other, the direction that
+  // bends less is then shrunk by the ratio of the steps the tolerances allow each way. On a B-spline surface whose knot spans run at very different 3D speeds
   // (a span 1e-4 as long as its neighbours carrying as much of the surface, say) one scale cannot
   // serve them all: each span then gets its own (x is piecewise linear in u, continuous, monotone).
   cet::Point2 scaled(double u, double v) const { return {uAxis_.map(u), vAxis_.map(v)}; }
