@@ -158,18 +158,21 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
       if (!tri.IsNull()) r.brepmesh_triangles += static_cast<std::size_t>(tri->NbTriangles());
     }
     if (options.measure) {
+      const double angleLimit = tess->angleRad() * (1 + 1e-6);
       const double weld = 1e-7 * model.bounds().diagonal();
       const std::vector<FaceQuality> q = measureFaces(*tess, -1, r.threads);
       for (const FaceQuality& fq : q) {
         r.cetview_max_dev = std::max(r.cetview_max_dev, fq.maxDeviation);
         r.cetview_faces_over += fq.maxDeviation > r.deflection;
+        r.cetview_max_angle_deg = std::max(r.cetview_max_angle_deg, fq.maxCornerAngle * 180 / M_PI);
+        r.cetview_faces_over_angle += fq.maxCornerAngle > angleLimit;
         r.cetview_degenerate += fq.degenerate;
       }
       for (PartId p = 0; p < model.parts().size(); ++p) {
         if (model.parts()[p].closed) r.cetview_cracks += countOpenEdges(partSoup(*tess, p), weld);
       }
       // BRepMesh's triangulations, as soups in part coordinates with their UV nodes.
-      std::vector<double> devs(m.faceShapes.size(), 0.0);
+      std::vector<double> devs(m.faceShapes.size(), 0.0), angles(m.faceShapes.size(), 0.0);
       std::vector<std::size_t> degenerate(m.faceShapes.size(), 0);
       std::vector<TriangleSoup> faceSoups(m.faceShapes.size());
       parallelFor(m.faceShapes.size(), r.threads, [&](std::size_t f, unsigned) {
@@ -198,6 +201,9 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
           devs[f] = tri->HasUVNodes() ? measureDeviation(eval, soup.positions.data(), uv.data(), soup.indices.data(),
                                                          soup.triangleCount())
                                       : INFINITY;
+          angles[f] = tri->HasUVNodes() ? measureCornerAngle(eval, soup.positions.data(), uv.data(), uv.size() / 2,
+                                                              soup.indices.data(), soup.triangleCount(), 0.1 * r.deflection)
+                                        : INFINITY;
         } catch (const Standard_Failure&) {
           devs[f] = INFINITY;
         }
@@ -205,6 +211,8 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
       for (std::size_t f = 0; f < devs.size(); ++f) {
         r.brepmesh_max_dev = std::max(r.brepmesh_max_dev, devs[f]);
         r.brepmesh_faces_over += devs[f] > r.deflection;
+        r.brepmesh_max_angle_deg = std::max(r.brepmesh_max_angle_deg, angles[f] * 180 / M_PI);
+        r.brepmesh_faces_over_angle += angles[f] > angleLimit;
         r.brepmesh_degenerate += degenerate[f];
       }
       for (PartId p = 0; p < model.parts().size(); ++p) {
@@ -250,6 +258,10 @@ std::string benchJson(const BenchResult& r) {
   num("brepmesh_triangles", static_cast<double>(r.brepmesh_triangles));
   num("cetview_max_dev", r.cetview_max_dev);
   num("brepmesh_max_dev", r.brepmesh_max_dev);
+  num("cetview_max_angle_deg", r.cetview_max_angle_deg);
+  num("brepmesh_max_angle_deg", r.brepmesh_max_angle_deg);
+  num("cetview_faces_over_angle", static_cast<double>(r.cetview_faces_over_angle));
+  num("brepmesh_faces_over_angle", static_cast<double>(r.brepmesh_faces_over_angle));
   num("cetview_faces_over", static_cast<double>(r.cetview_faces_over));
   num("brepmesh_faces_over", static_cast<double>(r.brepmesh_faces_over));
   num("cetview_cracks", static_cast<double>(r.cetview_cracks));

@@ -44,6 +44,29 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
   return worst;
 }
 
+double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv, std::size_t vertices,
+                          const std::uint32_t* idx, std::size_t triangles, double minLength) {
+  std::vector<gp_Dir> normal(vertices);
+  std::vector<char> regular(vertices, 0);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    gp_Pnt p;
+    regular[v] = eval.pointNormal(uv[2 * v], uv[2 * v + 1], p, normal[v]) ? 1 : 0;
+  }
+  double worst = 0;
+  for (std::size_t t = 0; t < triangles; ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = idx[3 * t + i], b = idx[3 * t + (i + 1) % 3];
+      if (!regular[a] || !regular[b]) continue;
+      const gp_Pnt pa(positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]);
+      const gp_Pnt pb(positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]);
+      if (pa.Distance(pb) < minLength) continue;
+      if (eval.crossesCrease(uv[2 * a], uv[2 * a + 1], uv[2 * b], uv[2 * b + 1])) continue;
+      worst = std::max(worst, normal[a].Angle(normal[b]));
+    }
+  }
+  return worst;
+}
+
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned threads) {
   const ModelImpl& model = t.model().impl();
   std::vector<FaceQuality> out(model.faces.size());
@@ -72,8 +95,11 @@ std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned 
     try {
       SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
       q.maxDeviation = measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data(), q.triangles);
+      q.maxCornerAngle = measureCornerAngle(eval, m.positions.data(), m.uv.data(), m.vertexCount(), idx.data(),
+                                            q.triangles, 0.1 * t.chordal());
     } catch (const Standard_Failure&) {
       q.maxDeviation = INFINITY;
+      q.maxCornerAngle = INFINITY;
     }
   });
   return out;

@@ -33,6 +33,10 @@ struct BenchResult {
   std::size_t cetview_triangles = 0, brepmesh_triangles = 0;
   double cetview_max_dev = 0, brepmesh_max_dev = 0;
   std::size_t cetview_faces_over = 0, brepmesh_faces_over = 0;  // faces measured above the deflection
+  // Largest angle between the exact normals at the ends of a triangle edge (measure.h), and the faces
+  // above the angular deflection: BRepMesh does not apply it inside faces, cetview does.
+  double cetview_max_angle_deg = 0, brepmesh_max_angle_deg = 0;
+  std::size_t cetview_faces_over_angle = 0, brepmesh_faces_over_angle = 0;
   std::size_t cetview_cracks = 0, brepmesh_cracks = 0;          // open edges after welding, closed parts only
   std::size_t cetview_degenerate = 0, brepmesh_degenerate = 0;
   double cetview_peak_mb = 0, brepmesh_peak_mb = 0;             // peak heap growth while meshing

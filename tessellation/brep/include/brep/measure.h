@@ -14,6 +14,9 @@ struct FaceQuality {
   std::size_t triangles = 0;
   std::size_t degenerate = 0; // zero-area triangles (|cross| <= 1e-12 * longest edge squared)
   std::size_t flipped = 0;    // triangles facing against their corners' surface normals
+  // Largest angle (radians) between the exact surface normals at the ends of a triangle edge, over
+  // edges of at least a tenth of the final chordal tolerance, off poles and creases.
+  double maxCornerAngle = 0;
 };
 
 // Measures level `level` of every face (each face's last level for -1). The deviation is sampled at
