@@ -245,7 +245,8 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
     std::size_t most;
   };
   const Strip strips[] = {
-      // r = 0.5, 50 long: 90 degrees in steps of 20 or less at each end; two triangles per step.
+      // r = 0.5, 50 long: 90 degrees in 8 steps at each end (halved from 2 until under 20 degrees);
+      // two triangles per step, and 2 to spare where the slanted ends' steps do not line up.
       {"quarter_cylinder",
        uvPolygonFace(new Geom_CylindricalSurface(gp_Ax3(), 0.5), {{0, 0}, {M_PI / 2, 0.3}, {M_PI / 2, 49.5}, {0, 50}}),
        2 * 8 + 2},

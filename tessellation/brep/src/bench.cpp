@@ -206,6 +206,7 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
                                         : INFINITY;
         } catch (const Standard_Failure&) {
           devs[f] = INFINITY;
+          angles[f] = INFINITY;
         }
       });
       for (std::size_t f = 0; f < devs.size(); ++f) {

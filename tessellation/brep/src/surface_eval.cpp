@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -14,7 +13,8 @@
 
 namespace cetview::brep {
 
-SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRad) : surface_(face, Standard_False), elementary_(surface_), face_(face) {
+SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRad)
+    : surface_(face, Standard_False), elementary_(surface_), face_(face) {
   if (surface_.GetType() == GeomAbs_BSplineSurface) {
     TopLoc_Location location;  // applied to the poles (BRep_Tool::Surface(face) would copy the surface)
     Handle(Geom_Surface) basis = BRep_Tool::Surface(face, location);

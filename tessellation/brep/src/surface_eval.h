@@ -52,9 +52,10 @@ class SurfaceEval {
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges
   // shapes about as in 3D; on a surface that bends one way more than the other, the direction that
-  // bends less is then shrunk by the ratio of the steps the tolerances allow each way. On a B-spline surface whose knot spans run at very different 3D speeds
-  // (a span 1e-4 as long as its neighbours carrying as much of the surface, say) one scale cannot
-  // serve them all: each span then gets its own (x is piecewise linear in u, continuous, monotone).
+  // bends less is then shrunk by the ratio of the steps the tolerances allow each way. On a
+  // B-spline surface whose knot spans run at very different 3D speeds (a span 1e-4 as long as its
+  // neighbours carrying as much of the surface, say) one scale cannot serve them all: each span then
+  // gets its own (x is piecewise linear in u, continuous, monotone).
   cet::Point2 scaled(double u, double v) const { return {uAxis_.map(u), vAxis_.map(v)}; }
   void unscaled(const cet::Point2& q, double& u, double& v) const { u = uAxis_.inverse(q.x), v = vAxis_.inverse(q.y); }
   double u0 = 0, v0 = 0, su = 1, sv = 1;  // the one scale (the mean over the face) in each direction
