@@ -185,6 +185,32 @@ TEST(HardCases, PlateWithHundredHoles) {
   test::tessellateAndCheck(*model, test::relative(0.01));
 }
 
+TEST(HardCases, HolesByTheRimOfACoarseCircle) {
+  // A disc of radius 14 with twelve small square holes just inside its rim, extruded: at the coarse
+  // levels the circle's chords cut across the holes in the face's parameter plane. Every level must
+  // still be meshed from its own boundary (no fallback mesh on any level) and be watertight.
+  BRepBuilderAPI_MakeFace maker(
+      BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp::Origin(), gp::DZ()), 14)).Edge()).Wire(),
+      Standard_True);
+  for (int i = 0; i < 12; ++i) {
+    const double a = i * M_PI / 6 + 0.1, r0 = 12.3, r1 = 13.8, h = 0.4;
+    const gp_Dir radial(std::cos(a), std::sin(a), 0), across(-std::sin(a), std::cos(a), 0);
+    auto at = [&](double r, double w) { return gp_Pnt(r * radial.XYZ() + w * across.XYZ()); };
+    const TopoDS_Wire hole = BRepBuilderAPI_MakePolygon(at(r0, -h), at(r1, -h), at(r1, h), at(r0, h), Standard_True).Wire();
+    maker.Add(TopoDS::Wire(hole.Reversed()));
+  }
+  ASSERT_TRUE(maker.IsDone());
+  auto model = test::loadShape(BRepPrimAPI_MakePrism(maker.Face(), gp_Vec(0, 0, 3)).Shape(), "rim_holes");
+  ASSERT_TRUE(model);
+  ASSERT_TRUE(model->parts()[0].closed);
+  for (double d : {0.01, 0.001}) {
+    SCOPED_TRACE(std::to_string(d * 100) + "%");
+    auto t = test::tessellateAndCheck(*model, test::relative(d));
+    ASSERT_TRUE(t);
+    for (FaceId f = 0; f < model->faces().size(); ++f) EXPECT_EQ(t->report(f).status, FaceStatus::kOk) << t->report(f).reason;
+  }
+}
+
 TEST(HardCases, VeryThinFaces) {
   // A 100 x 0.01 x 20 slab (faces narrower than the deflection) and a 0.002 rad slice of a cylinder.
   checkAtSeveralDeflections(BRepPrimAPI_MakeBox(100, 0.01, 20).Shape(), "slab");

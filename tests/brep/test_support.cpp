@@ -69,7 +69,20 @@ std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshPa
       EXPECT_LE(q.maxDeviation, tolerance) << "level " << k << ": face " << f << " (" << kind << ") deviates "
                                            << q.maxDeviation / tolerance << "x the tolerance " << tolerance;
       EXPECT_EQ(q.degenerate, 0u) << "level " << k << ": face " << f << " (" << kind << ")";
-      const auto listed = [f](const std::vector<FaceId>& faces) { return std::find(faces.begin(), faces.end(), f) != faces.end(); };
+      const auto listed = [f](const std::vector<FaceId>& faces) {
+        return std::find(faces.begin(), faces.end(), f) != faces.end();
+      };
+      // The angular deflection, on the final level (coarser levels leave edges below a tenth of
+      // their own, larger, chordal tolerance unsplit), for every face CET meshed.
+      const FaceStatus status = t.report(f).status;
+      if (k == t.lastLevel() && (status == FaceStatus::kOk || status == FaceStatus::kRepaired)) {
+        if (listed(options.knownAngle) && q.maxCornerAngle > t.angleRad()) {
+          std::printf("known issue: face %u (%s) turns %.1f degrees across an edge\n", f, kind, q.maxCornerAngle * 180 / M_PI);
+        } else {
+          EXPECT_LE(q.maxCornerAngle, t.angleRad() * (1 + 1e-4))
+              << "face " << f << " (" << kind << ") turns " << q.maxCornerAngle * 180 / M_PI << " degrees across an edge";
+        }
+      }
       const bool known = listed(options.knownFlips) || (k < t.lastLevel() && listed(options.knownCoarseFlips));
       if (known && q.flipped > 0) {
         std::printf("known issue: level %d: face %u (%s) has %zu flipped triangles\n", k, f, kind, q.flipped);

@@ -28,13 +28,16 @@ struct CheckOptions {
   // model test for which and why.
   std::vector<FaceId> knownFlips;
   std::vector<FaceId> knownCoarseFlips;  // the same on every level but the last, which must be clean
+  // Faces whose final level exceeds the angular deflection: a known open issue (reported, not failed).
+  std::vector<FaceId> knownAngle;
   bool everyLevel = true;        // check each level against its own tolerance, not only the final one
 };
 
 // Tessellates `model` with params and asserts the promise, level by level (gtest failures name the
 // face): every face has triangles; the measured deviation of each face is within the level's
 // chordal tolerance; closed parts have no open edge; no degenerate or flipped triangle; no self-
-// intersection. Returns the tessellator for further checks.
+// intersection; on the final level, no triangle edge turns the surface normal by more than the
+// angular deflection. Returns the tessellator for further checks.
 std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshParams& params,
                                                 const CheckOptions& options = {});
 

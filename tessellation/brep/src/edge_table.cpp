@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include <BRepAdaptor_Curve.hxx>
+#include <gp_Pnt2d.hxx>
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -101,6 +102,9 @@ void EdgeTable::scalesSet() {
                      info.faces.end());
     for (FaceUse& use : info.faces) use.scale = faceScales_[use.id];
   }
+  faceUses_.assign(faceScales_.size(), {});
+  for (EdgeId e = 0; e < info_.size(); ++e)
+    for (std::uint32_t k = 0; k < info_[e].faces.size(); ++k) faceUses_[info_[e].faces[k].id].push_back({e, k});
 }
 
 bool EdgeTable::discretise(int level, const Level& tolerance, unsigned threads, const std::atomic<bool>* cancel) {
@@ -113,7 +117,96 @@ bool EdgeTable::discretise(int level, const Level& tolerance, unsigned threads, 
     }
     discretiseEdge(static_cast<EdgeId>(e), level, tolerance);
   });
-  return !cancelled;
+  if (cancelled) return false;
+  separateCrossings(level, threads);
+  return true;
+}
+
+double EdgeTable::pcurveParameter(const Info& info, const FaceUse& use, double t) {
+  return info.last == info.first ? use.first : use.first + (t - info.first) / (info.last - info.first) * (use.last - use.first);
+}
+
+// Coarse chords of two loops (or two parts of one loop) that run close together can cross in the
+// face's parameter plane where the curves do not: the face could not be meshed from that level's
+// boundary. Both crossing segments are halved, for every face that uses their edges, until no face's
+// segments cross (or a few rounds have passed: pcurves that really cross are the mesher's to report).
+void EdgeTable::separateCrossings(int level, unsigned threads) {
+  constexpr int kRounds = 8;
+  for (int round = 0; round < kRounds; ++round) {
+    std::vector<std::vector<SegmentId>> found(faceUses_.size());
+    parallelFor(faceUses_.size(), threads, [&](std::size_t f, unsigned) { findCrossings(static_cast<FaceId>(f), level, found[f]); });
+    std::vector<SegmentId> split;
+    for (const auto& list : found) split.insert(split.end(), list.begin(), list.end());
+    if (split.empty()) return;
+    std::sort(split.begin(), split.end());
+    split.erase(std::unique(split.begin(), split.end()), split.end());
+    // Per edge, its segments from the last one back, so earlier indices stay valid.
+    std::vector<std::size_t> starts;
+    for (std::size_t i = 0; i < split.size(); ++i)
+      if (i == 0 || split[i].edge != split[i - 1].edge) starts.push_back(i);
+    starts.push_back(split.size());
+    parallelFor(starts.size() - 1, threads, [&](std::size_t g, unsigned) {
+      const EdgeId e = split[starts[g]].edge;
+      EdgePoints& points = levels_[e][static_cast<std::size_t>(level)];
+      try {
+        BRepAdaptor_Curve curve(TopoDS::Edge(model_.edgeShapes[e].Oriented(TopAbs_FORWARD)));
+        for (std::size_t i = starts[g + 1]; i-- > starts[g];) {
+          const std::uint32_t j = split[i].segment;
+          const double tm = 0.5 * (points.t[j] + points.t[j + 1]);
+          if (!(tm > points.t[j] && tm < points.t[j + 1])) continue;
+          points.t.insert(points.t.begin() + j + 1, tm);
+          points.p.insert(points.p.begin() + j + 1, curve.Value(tm));
+        }
+      } catch (const Standard_Failure&) {
+        // Left as it is: the face mesher reports the crossing.
+      }
+    });
+  }
+}
+
+void EdgeTable::findCrossings(FaceId face, int level, std::vector<SegmentId>& out) const {
+  struct Segment {
+    double x0, y0, x1, y1;
+    SegmentId id;
+  };
+  std::vector<Segment> segments;
+  const FaceScale& scale = faceScales_[face];
+  for (const auto& [e, k] : faceUses_[face]) {
+    const Info& info = info_[e];
+    const FaceUse& use = info.faces[k];
+    const EdgePoints& points = levels_[e][static_cast<std::size_t>(level)];
+    double px = 0, py = 0;
+    for (std::size_t j = 0; j < points.t.size(); ++j) {
+      const gp_Pnt2d uv = use.pcurve->Value(pcurveParameter(info, use, points.t[j]));
+      const double x = uv.X() * scale.su, y = uv.Y() * scale.sv;
+      if (j > 0) segments.push_back({px, py, x, y, {e, static_cast<std::uint32_t>(j - 1)}});
+      px = x, py = y;
+    }
+  }
+  if (segments.size() < 3) return;
+  auto orient = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  };
+  std::sort(segments.begin(), segments.end(), [](const Segment& a, const Segment& b) { return std::min(a.x0, a.x1) < std::min(b.x0, b.x1); });
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& a = segments[i];
+    const double aRight = std::max(a.x0, a.x1), aLow = std::min(a.y0, a.y1), aHigh = std::max(a.y0, a.y1);
+    for (std::size_t j = i + 1; j < segments.size() && std::min(segments[j].x0, segments[j].x1) <= aRight; ++j) {
+      const Segment& b = segments[j];
+      if (std::max(b.y0, b.y1) < aLow || std::min(b.y0, b.y1) > aHigh) continue;
+      const double d1 = orient(a.x0, a.y0, a.x1, a.y1, b.x0, b.y0), d2 = orient(a.x0, a.y0, a.x1, a.y1, b.x1, b.y1);
+      const double d3 = orient(b.x0, b.y0, b.x1, b.y1, a.x0, a.y0), d4 = orient(b.x0, b.y0, b.x1, b.y1, a.x1, a.y1);
+      if (!((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0)) || !((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0))) continue;
+      // Segments meeting at a corner touch there without crossing; where edges meet, their pcurves
+      // agree only to within the edge tolerance, so they may overlap by a hair: only a crossing
+      // inside both segments counts.
+      const double along = d3 / (d3 - d4), alongB = d1 / (d1 - d2);
+      if (along > 1e-3 && along < 1 - 1e-3 && alongB > 1e-3 && alongB < 1 - 1e-3) {
+        out.push_back(a.id);
+        out.push_back(b.id);
+      }
+    }
+  }
 }
 
 void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
@@ -156,9 +249,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     auto normalsAt = [&](double t, gp_Vec* n) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceUse& use = info.faces[k];
-        const double s = info.last == info.first ? use.first
-                                                 : use.first + (t - info.first) / (info.last - info.first) * (use.last - use.first);
-        const gp_Pnt2d uv = use.pcurve->Value(s);
+        const gp_Pnt2d uv = use.pcurve->Value(pcurveParameter(info, use, t));
         gp_Pnt p;
         gp_Vec du, dv;
         d1(k, uv.X(), uv.Y(), p, du, dv);
@@ -170,13 +261,11 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     };
     // How far a triangle of height h (in the face's scaled UV) standing on the segment's UV chord
     // misses the tolerances: the larger of its centroid's sag over the chordal tolerance and its
-    // corners' normal spread over the angular one. The apex stays inside the face's parameter box.
+    // corners' normal spread over the angular one, or twice over if the triangle folds. The apex
+    // stays inside the face's parameter box.
     auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, double height, int side) {
       const FaceUse& use = info.faces[k];
-      auto param = [&](double t) {
-        return info.last == info.first ? use.first : use.first + (t - info.first) / (info.last - info.first) * (use.last - use.first);
-      };
-      const gp_Pnt2d a = use.pcurve->Value(param(ta)), b = use.pcurve->Value(param(tb));
+      const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
       const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
       const double len = std::hypot(dx, dy);
       if (!(len > 0)) return 0.0;
@@ -202,13 +291,22 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         bad = std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / tol.chordal;
       }
       const double spread = std::max(angleBetween(na, nApex), angleBetween(nb, nApex));
+      // A facet nearly edge-on to the surface (the face mesher's fold rule), or flipped: the chord
+      // sags beside the segment as far as the apex reaches, so no point can stand on it.
+      const double ma = na.Magnitude(), mb = nb.Magnitude(), mApex = nApex.Magnitude();
+      if (ma > 0 && mb > 0 && mApex > 0) {
+        const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
+        const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
+        if (facet.Dot(nSum) <= std::cos(70.0 * M_PI / 180.0) * facet.Magnitude() * nSum.Magnitude()) return 2.0;
+      }
       return std::max(bad, spread / tol.angleRad);
     };
-    // Free-form faces only: analytic surfaces bend the same way next to the boundary as along it,
-    // which the normal criterion above already covers.
+    // Not on planes, cylinders, cones and spheres: they bend the same way next to the boundary as
+    // along it, which the normal criterion above already covers. A torus does not: beside a
+    // circle on its top, the tube turns down.
     auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
       for (std::size_t k = 0; k < uses; ++k) {
-        if (!info.faces[k].scale.freeform) continue;
+        if (!info.faces[k].scale.bendsBeside) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
           if (standing(k, ta, tb, pa, pb, 0.866, side) > 1.0) return true;

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <Geom2d_Curve.hxx>
@@ -34,7 +36,9 @@ class EdgeTable {
     bool valid = false;          // false: the face has no usable surface and does not guide its edges
     double su = 1, sv = 1;       // the face's UV scaling
     double uMin = 0, uMax = 0, vMin = 0, vMax = 0;
-    bool freeform = false;       // B-spline, Bezier, offset, swept: bends unpredictably near the edge
+    // Tori and free-form surfaces (B-spline, Bezier, offset, swept): beside an edge the surface can
+    // bend another way than along it.
+    bool bendsBeside = false;
     std::shared_ptr<const BSplineDirect> direct;  // a B-spline face's direct evaluator (immutable, shared)
   };
   // Before the first discretise(): every face's scale (from any thread, one call per face), then
@@ -77,11 +81,23 @@ class EdgeTable {
     std::vector<FaceUse> faces;  // at most two
   };
   void discretiseEdge(EdgeId e, int level, const Level& tolerance);
+  static double pcurveParameter(const Info& info, const FaceUse& use, double t);
+
+  // Segment j of edge e (between its points j and j + 1) at the level at hand.
+  struct SegmentId {
+    EdgeId edge;
+    std::uint32_t segment;
+    bool operator<(const SegmentId& o) const { return edge != o.edge ? edge < o.edge : segment < o.segment; }
+    bool operator==(const SegmentId& o) const { return edge == o.edge && segment == o.segment; }
+  };
+  void separateCrossings(int level, unsigned threads);
+  void findCrossings(FaceId face, int level, std::vector<SegmentId>& out) const;
 
   const ModelImpl& model_;
   std::vector<Info> info_;
   std::vector<std::vector<EdgePoints>> levels_;  // [edge][level], sized up front (no reallocation)
   std::vector<FaceScale> faceScales_;             // [face]
+  std::vector<std::vector<std::pair<EdgeId, std::uint32_t>>> faceUses_;  // [face]: (edge, index in its faces)
 };
 
 }  // namespace cetview::brep

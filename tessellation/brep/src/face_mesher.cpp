@@ -614,7 +614,7 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
   }
 }
 
-bool FaceMesher::clearOfChords(double u, double v) const {
+bool FaceMesher::clearOfChords(double u, double v, bool forAngle) const {
   if (chords_.empty()) return true;
   const cet::Point2 q = scaled(u, v);
   const int i = static_cast<int>((q.x - gridX0_) / gridCellX_), j = static_cast<int>((q.y - gridY0_) / gridCellY_);
@@ -629,14 +629,48 @@ bool FaceMesher::clearOfChords(double u, double v) const {
     const double s = e2 > 0 ? ((q.x - c.pa.x) * ex + (q.y - c.pa.y) * ey) / e2 : 0.5;
     if (s < -0.1 || s > 1.1) continue;
     if (!evaluated) x = eval_.point(u, v), evaluated = true;
-    if (c.ab.Crossed(gp_Vec(c.a, x)).Dot(c.n) < c.clearance * c.ab.Magnitude()) return false;
+    const gp_Vec facet = c.ab.Crossed(gp_Vec(c.a, x));
+    if (facet.Dot(c.n) >= c.clearance * c.ab.Magnitude()) continue;
+    if (forAngle) {
+      // Inside the clearance, a point that fixes the angle may still stand on the chord if the
+      // facet it makes with it faces the surface's way within 60 degrees (the fold rule's 70, with
+      // a margin). Without it, edges from the boundary into tori and free-form faces kept up to
+      // 50 degrees on the sample models.
+      gp_Pnt p;
+      gp_Dir n;
+      if (eval_.pointNormal(u, v, p, n)) {
+        const gp_Vec nSum = 2 * c.n + gp_Vec(n);
+        if (facet.Dot(nSum) > 0.5 * facet.Magnitude() * nSum.Magnitude()) continue;
+      }
+    }
+    if (kDebugRefine) {
+      std::fprintf(stderr, "  not clear: chord length %g clearance %g distance %g at %g\n", c.ab.Magnitude(), c.clearance,
+                   facet.Dot(c.n) / c.ab.Magnitude(), s);
+    }
+    return false;
   }
   return true;
 }
 
-bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const {
-  if (clearOfChords(u, v)) return true;
+bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint, bool forAngle,
+                           int angleEdge) const {
+  if (clearOfChords(u, v, forAngle)) return true;
   const cet::CetMesh& m = cdt_->mesh();
+  if (forAngle && angleEdge >= 0) {
+    // Off the middle of the edge whose ends' normals differ too much: any point between the
+    // middle thirds or so brings both parts within the angle (the normal turns about evenly).
+    const std::size_t oa = base_ + m.vertex(t, (angleEdge + 1) % 3), ob = base_ + m.vertex(t, (angleEdge + 2) % 3);
+    const double eu[2] = {mesh.uv[2 * oa], mesh.uv[2 * ob]}, ev[2] = {mesh.uv[2 * oa + 1], mesh.uv[2 * ob + 1]};
+    for (double f : {0.65, 0.35, 0.8, 0.2}) {
+      const double w[2] = {1 - f, f};
+      double uu = 0, vv = 0;
+      eval_.blend(2, w, eu, ev, uu, vv);
+      if (clearOfChords(uu, vv, true)) {
+        u = uu, v = vv;
+        return true;
+      }
+    }
+  }
   if (anyPoint) {
     // A flipped triangle: any of its centroid and free-edge midpoints that keeps the clearance.
     double cu[3], cv[3];
@@ -668,7 +702,7 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
       ++n;
     }
     for (int i = 0; i < n; ++i) {
-      if (clearOfChords(tu[i], tv[i])) {
+      if (clearOfChords(tu[i], tv[i], forAngle)) {
         u = tu[i], v = tv[i];
         return true;
       }
@@ -687,7 +721,7 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
         const double cv[3] = {mesh.uv[2 * oa + 1], mesh.uv[2 * ob + 1], mesh.uv[2 * oc + 1]};
         eval_.blend(3, w, cu, cv, uu, vv);
       }
-      if (clearOfChords(uu, vv)) {
+      if (clearOfChords(uu, vv, forAngle)) {
         u = uu, v = vv;
         return true;
       }
@@ -766,12 +800,14 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       const TriangleRecord* r = &records_.at(t);
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1;
+      bool forAngle = false;
       if (r->deviation > chordal && (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed))) {
         at = r->worstSample;
       } else if (r->flags & TriangleRecord::kCollapsed) {
         at = -1;
       } else if (angleSplit.splits(*r)) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
+        forAngle = true;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < foldCos) && r->longest > minSize) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
@@ -805,7 +841,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // as its apex, and the triangle they make on the chord is flipped as well, as long as the
       // chord itself: a cascade towards the boundary that no size test stops.
       const bool override = tooFar || (flipped && r->longest > level.chordal && !onChord(t));
-      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped) && !override) continue;
+      if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped, forAngle, at - 1) && !override) {
+        if (kDebugRefine) std::fprintf(stderr, "pass %d: triangle %u (split at %d) dropped: not clear of chords\n", pass, t, at);
+        continue;
+      }
       if (kDebugRefine) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalCos, r->longest, r->flags, u, v);

@@ -112,10 +112,16 @@ class FaceMesher {
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
-  // towards the opposite corner when needed; false when no safe point was found.
-  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint) const;
+  // towards the opposite corner when needed; false when no safe point was found. A split for the
+  // angle (forAngle; angleEdge the edge to split, -1 for none) may also slide along that edge, and
+  // may come closer to a chord (see clearOfChords).
+  bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint, bool forAngle,
+                 int angleEdge) const;
   void buildChords(const FaceMesh& mesh);
-  bool clearOfChords(double u, double v) const;
+  // Whether (u, v) keeps every nearby chord's clearance. forAngle: within a clearance, also a point
+  // whose facet on the chord would face the surface's way (the clearance is cautious: it guards
+  // points that split for the chordal tolerance or a fold, which come back until they find room).
+  bool clearOfChords(double u, double v, bool forAngle) const;
 
   // A boundary chord (a constrained edge, domain on its left) and the clearance points must keep.
   struct Chord {

@@ -110,8 +110,7 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
       scale.su = eval->su, scale.sv = eval->sv;
       scale.uMin = eval->uMin, scale.uMax = eval->uMax, scale.vMin = eval->vMin, scale.vMax = eval->vMax;
       const GeomAbs_SurfaceType type = eval->adaptor().GetType();
-      scale.freeform = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone &&
-                       type != GeomAbs_Sphere && type != GeomAbs_Torus;
+      scale.bendsBeside = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere;
       scale.direct = eval->direct();
       scale.valid = true;
       faces[f].eval = std::move(eval);
