@@ -107,5 +107,34 @@ TEST(UvScaling, WithTolerancesAThinTorusRunsFurtherThanTenToOne) {
   EXPECT_NEAR(stretch(patch, 0.02, 20 * M_PI / 180), expected, 1e-6 * expected);
 }
 
+TEST(UvScaling, WithTolerancesADevelopableBSplineRunsThirtyToOne) {
+  // The cylinder above as a B-spline (a wing's skin or a swept profile is the same kind of face:
+  // straight one way, untwisted): it stretches like the cylinder, up to 30:1. The free-form
+  // fillet's square-root rule (3:1 at most) had its triangles 10 times shorter than they may be.
+  const Handle(Geom_BSplineSurface) tube = GeomConvert::SurfaceToBSplineSurface(
+      new Geom_RectangularTrimmedSurface(new Geom_CylindricalSurface(kFrame, 0.5), 0.0, M_PI / 2, 0.0, 50.0));
+  ASSERT_FALSE(tube.IsNull());
+  EXPECT_NEAR(stretch(tube, 0.01, 20 * M_PI / 180), 1.0 / 30, 1e-9);
+  // Without tolerances, as every free-form face curved one way: the square-root rule.
+  EXPECT_NEAR(stretch(tube), 1.0 / 3, 1e-9);
+}
+
+TEST(UvScaling, TwistedRuledBSplineIsNotStretchedAsADevelopable) {
+  // A piece of a hyperboloid of one sheet as a B-spline: straight along v (its rulings) and curved
+  // along u like the cylinder, but twisted: its normal turns along each ruling, so triangles long
+  // along them would fold. It keeps the free-form square-root rule.
+  TColgp_Array2OfPnt points(1, 9, 1, 3);
+  for (int i = 1; i <= 9; ++i) {
+    const double a = (i - 1) * M_PI / 16;
+    for (int j = 1; j <= 3; ++j) {
+      const double t = 25.0 * (j - 1);
+      points(i, j) = gp_Pnt(0.5 * std::cos(a) - t * 0.02 * std::sin(a), 0.5 * std::sin(a) + t * 0.02 * std::cos(a), t);
+    }
+  }
+  const Handle(Geom_BSplineSurface) sheet = GeomAPI_PointsToBSplineSurface(points, 3, 8, GeomAbs_C2, 1e-6).Surface();
+  ASSERT_FALSE(sheet.IsNull());
+  EXPECT_GE(stretch(sheet, 0.01, 20 * M_PI / 180), 1.0 / 3 - 1e-9);
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -34,6 +34,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
   double lu = 0, lv = 0, ku = 0, kv = 0;  // means
   double kuMax = 0, kvMax = 0;
+  double twistMax = 0;  // |Suv . N| / (|Su| |Sv|): how the normal turns along one direction as it moves the other
   int n = 0;
   int uTurns = 0, vTurns = 0;  // grid points where one direction's curvature is 4x the other's
   for (int i = 0; i < 5; ++i) {
@@ -50,6 +51,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
         const double pu = std::abs(duu.Dot(nrm)) / (mu * mu), pv = std::abs(dvv.Dot(nrm)) / (mv * mv);
         ku += pu, kv += pv;
         kuMax = std::max(kuMax, pu), kvMax = std::max(kvMax, pv);
+        twistMax = std::max(twistMax, std::abs(duv.Dot(nrm)) / (mu * mv));
         if (pu > 4 * pv) ++uTurns;
         if (pv > 4 * pu) ++vTurns;
       }
@@ -76,9 +78,15 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
                            type == GeomAbs_Torus;
   const bool freeformDirectional = !directional && (uTurns == n || vTurns == n);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
+  // A smooth free-form face straight one way and untwisted at every grid point (a developable
+  // B-spline: a wing's skin, a swept profile, a cone written as a B-spline) bends like an
+  // extrusion. (Not across creases: long triangles along a fold leave its ridge between their
+  // samples; nor where the rulings twist: the normal turns along them.)
+  const bool straightOneWay = freeformDirectional && std::min(kuMax, kvMax) * size < 1e-9 && twistMax * size < 1e-6 &&
+                              surface_.NbUIntervals(GeomAbs_C1) == 1 && surface_.NbVIntervals(GeomAbs_C1) == 1;
   if ((directional || freeformDirectional) && std::max(ku, kv) * size > 1e-3) {
     double hu = 0, hv = 0, most = 0;
-    if (directional && chordal > 0 && angleRad > 0) {
+    if ((directional || straightOneWay) && chordal > 0 && angleRad > 0) {
       // The largest curvature each way: the step must do where the surface bends most.
       const auto step = [&](double k) { return k > 0 ? std::min(angleRad / k, std::sqrt(8 * chordal / k)) : HUGE_VAL; };
       hu = step(kuMax), hv = step(kvMax);
@@ -88,7 +96,10 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
       // refinement takes them for slivers, and a sliver split on its long edge makes more.
       if (kuMax > 0) hu = std::min(hu, std::sqrt(2 * hv / kuMax));
       if (kvMax > 0) hv = std::min(hv, std::sqrt(2 * hu / kvMax));
-      most = 1e-3;  // 1000:1 at most: an analytic surface bends the same way all along it
+      // 1000:1 at most on an analytic surface, which bends the same way all along it; 30:1 on a
+      // developable free-form face, whose boundary pcurves may curve across the long direction (at
+      // 100:1 the Delaunay triangulation joins three points of such a curve: a flipped triangle).
+      most = directional ? 1e-3 : 1.0 / 30;
     } else {
       const double kmin = 1e-300;
       hu = 1 / std::sqrt(std::max(ku, kmin)), hv = 1 / std::sqrt(std::max(kv, kmin));
