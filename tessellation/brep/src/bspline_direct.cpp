@@ -143,13 +143,25 @@ void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) co
     for (int k = 0; k < 4; ++k) out[4 + k] = su4[k], out[8 + k] = sv4[k];
 }
 
+template <bool kDerivatives, int PU>
+void BSplineDirect::evaluateWithU(double u, double v, int su, int sv, double* out) const {
+  switch (v_.degree) {
+    case 1: return evaluate<kDerivatives, PU, 1>(u, v, su, sv, out);
+    case 2: return evaluate<kDerivatives, PU, 2>(u, v, su, sv, out);
+    case 3: return evaluate<kDerivatives, PU, 3>(u, v, su, sv, out);
+    default: return evaluate<kDerivatives, PU, 0>(u, v, su, sv, out);
+  }
+}
+
 template <bool kDerivatives>
 void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {
-  // Bicubic patches are the common case: their loops unrolled.
-  if (u_.degree == 3 && v_.degree == 3) {
-    evaluate<kDerivatives, 3, 3>(u, v, su, sv, out);
-  } else {
-    evaluate<kDerivatives, 0, 0>(u, v, su, sv, out);
+  // Degrees 1 to 3 each way (most faces of the sample models have one of them at least) with
+  // their loops unrolled; others take the degree at run time.
+  switch (u_.degree) {
+    case 1: return evaluateWithU<kDerivatives, 1>(u, v, su, sv, out);
+    case 2: return evaluateWithU<kDerivatives, 2>(u, v, su, sv, out);
+    case 3: return evaluateWithU<kDerivatives, 3>(u, v, su, sv, out);
+    default: return evaluateWithU<kDerivatives, 0>(u, v, su, sv, out);
   }
 }
 

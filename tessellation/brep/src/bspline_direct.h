@@ -60,6 +60,8 @@ class BSplineDirect {
   BSplineDirect() = default;
   template <bool kDerivatives>
   void evaluate(double u, double v, int su, int sv, double* out) const;
+  template <bool kDerivatives, int PU>
+  void evaluateWithU(double u, double v, int su, int sv, double* out) const;
   template <bool kDerivatives, int PU, int PV>  // degrees fixed at compile time, or 0
   void evaluate(double u, double v, int su, int sv, double* out) const;
 
