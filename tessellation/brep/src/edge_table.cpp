@@ -19,6 +19,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
+#include "facet_rules.h"
 #include "model_impl.h"
 #include "parallel.h"
 
@@ -297,7 +298,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       if (ma > 0 && mb > 0 && mApex > 0) {
         const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
         const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
-        if (facet.Dot(nSum) <= std::cos(70.0 * M_PI / 180.0) * facet.Magnitude() * nSum.Magnitude()) return 2.0;
+        if (facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude()) return 2.0;
       }
       return std::max(bad, spread / tol.angleRad);
     };

@@ -25,6 +25,7 @@
 
 #include "brepmesh_fallback.h"
 #include "edge_table.h"
+#include "facet_rules.h"
 #include "work_sharing.h"
 
 namespace cetview::brep {
@@ -640,7 +641,7 @@ bool FaceMesher::clearOfChords(double u, double v, bool forAngle) const {
       gp_Dir n;
       if (eval_.pointNormal(u, v, p, n)) {
         const gp_Vec nSum = 2 * c.n + gp_Vec(n);
-        if (facet.Dot(nSum) > 0.5 * facet.Magnitude() * nSum.Magnitude()) continue;
+        if (facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude()) continue;
       }
     }
     if (kDebugRefine) {
@@ -738,9 +739,6 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = kDeviationMargin * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
-  // A facet more than 70 degrees off its corners' normals is nearly edge-on: a flip waiting to happen.
-  // (Long thin triangles on a curved surface tilt less; splitting them would only make more.)
-  const double foldCos = std::cos(70.0 * M_PI / 180.0);
   const AngleSplit angleSplit{static_cast<float>(std::cos(level.angleRad * (1 + 1e-6))), static_cast<float>(minSize)};
   std::vector<gp_Pnt2d> uvs;
   if (kDebugRefine) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
@@ -808,7 +806,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       } else if (angleSplit.splits(*r)) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
-      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < foldCos) && r->longest > minSize) {
+      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && r->longest > minSize) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
         // thinner ones).
