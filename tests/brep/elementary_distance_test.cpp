@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include <GeomAPI_ProjectPointOnSurf.hxx>
@@ -63,6 +64,75 @@ TEST(ElementaryDistance, OtherSurfacesAreNotElementary) {
   EXPECT_TRUE(ElementaryDistance{GeomAdaptor_Surface(trimmed)}.valid());  // the adaptor sees the plane
   const Handle(Geom_Surface) offset = new Geom_OffsetSurface(new Geom_SphericalSurface(kFrame, 3.0), 0.5);
   EXPECT_FALSE(ElementaryDistance{GeomAdaptor_Surface(offset)}.valid());
+}
+
+// The largest distance of a flat triangle with corners on the surface, in closed form, against a
+// dense barycentric grid of the same point distance: never below the grid's largest (it is the
+// maximum), never more than the grid's resolution above it, and reached on the edge it names.
+// A sphere's deepest point is inside acute triangles; a cylinder's is on an edge (its axis would have
+// to pierce the triangle): `insideSeen` says whether the inside case must come up.
+void expectTriangleDeviation(const Handle(Geom_Surface)& surface, double uSpread, double vSpread, bool insideSeen,
+                             const char* name) {
+  SCOPED_TRACE(name);
+  const ElementaryDistance distance{GeomAdaptor_Surface(surface)};
+  ASSERT_TRUE(distance.hasTriangleDeviation());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  constexpr int kSteps = 160;
+  int insideCount = 0, edgeCount = 0;
+  for (int k = 0; k < 300; ++k) {
+    // Triangles from tiny to a large part of the surface, acute and obtuse, thin and fat.
+    const double scale = std::pow(10.0, -3.0 * unit(rng));
+    const double u = 6.28 * unit(rng), v = vSpread * (unit(rng) - 0.5);
+    gp_XYZ p[3];
+    for (gp_XYZ& c : p) c = surface->Value(u + scale * uSpread * unit(rng), v + scale * vSpread * (unit(rng) - 0.5)).XYZ();
+    if ((p[1] - p[0]).Crossed(p[2] - p[0]).Modulus() < 1e-9 * scale * scale) continue;
+    int where = -2;
+    const double exact = distance.triangleDeviation(p[0], p[1], p[2], where);
+    ASSERT_GE(where, -1);
+    double grid = 0, onEdge[3] = {0, 0, 0};
+    for (int i = 0; i <= kSteps; ++i) {
+      for (int j = 0; i + j <= kSteps; ++j) {
+        const double b[3] = {double(kSteps - i - j) / kSteps, double(i) / kSteps, double(j) / kSteps};
+        const double d = distance(gp_Pnt(b[0] * p[0] + b[1] * p[1] + b[2] * p[2]));
+        grid = std::max(grid, d);
+        for (int e = 0; e < 3; ++e)
+          if (b[e] == 0) onEdge[e] = std::max(onEdge[e], d);
+      }
+    }
+    const double slack = 1e-12 + 2e-3 * grid;
+    EXPECT_GE(exact, grid - 1e-12) << "triangle " << k;
+    EXPECT_LE(exact, grid + slack) << "triangle " << k;
+    if (where >= 0) {
+      EXPECT_NEAR(onEdge[where], exact, slack) << "triangle " << k << " edge " << where;
+      ++edgeCount;
+    } else {
+      ++insideCount;
+    }
+  }
+  if (insideSeen) {
+    EXPECT_GT(insideCount, 10);
+  }
+  EXPECT_GT(edgeCount, 10);
+}
+
+TEST(ElementaryDistance, TriangleDeviationIsTheLargestDistanceOfTheFlatTriangle) {
+  expectTriangleDeviation(new Geom_SphericalSurface(kFrame, 3.0), 2.0, 2.5, true, "sphere");
+  expectTriangleDeviation(new Geom_CylindricalSurface(kFrame, 2.5), 2.5, 8.0, false, "cylinder");
+  // A corner off the surface (an edge point within its edge's tolerance) counts as far as it is off.
+  const Handle(Geom_Surface) sphere = new Geom_SphericalSurface(kFrame, 3.0);
+  const ElementaryDistance sphereDistance{GeomAdaptor_Surface(sphere)};
+  const gp_XYZ centre = kFrame.Location().XYZ();
+  const gp_XYZ a = sphere->Value(0.1, 0.1).XYZ(), b = sphere->Value(0.1002, 0.1).XYZ();
+  const gp_XYZ outward = centre + 1.01 * (sphere->Value(0.1001, 0.1002).XYZ() - centre);
+  int where = -2;
+  EXPECT_NEAR(sphereDistance.triangleDeviation(a, b, outward, where), 0.03, 1e-9);
+  const ElementaryDistance plane{GeomAdaptor_Surface(new Geom_Plane(kFrame))};
+  EXPECT_NEAR(plane.triangleDeviation(gp_XYZ(3, -2, 7), gp_XYZ(5, -3, 7), gp_XYZ(1, 0, 8), where),
+              std::abs(gp_XYZ(-2, 2, 1).Dot(kFrame.Direction().XYZ())), 1e-12);
+  const ElementaryDistance torus{GeomAdaptor_Surface(new Geom_ToroidalSurface(kFrame, 5.0, 1.5))};
+  EXPECT_FALSE(torus.hasTriangleDeviation());
+  EXPECT_LT(torus.triangleDeviation(gp_XYZ(0, 0, 0), gp_XYZ(1, 0, 0), gp_XYZ(0, 1, 0), where), 0);
 }
 
 }  // namespace

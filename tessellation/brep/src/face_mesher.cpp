@@ -64,6 +64,7 @@ FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings
   // Ruled surfaces (planes, cylinders, cones) deviate from a triangle as a quadratic whose maximum
   // the centroid and edge midpoints catch; doubly curved ones can peak elsewhere in big triangles.
   freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone;
+  exactDeviation_ = eval_.exactTriangleDeviation();
   for (const std::string& r : topology_.repairs) repairs_.push_back(r);
   repaired_ = !repairs_.empty();
 }
@@ -459,14 +460,28 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     }
   }
 
+  static const double kCentroid[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  if (exactDeviation_ && !c.collapsed) {
+    // The deviation in closed form, split where it peaks (inside: the centroid; an edge: its
+    // midpoint). The corresponding-point guard (below) at the centroid alone: a triangle whose UV
+    // region wraps around a periodic direction away from its corners has its centroid there.
+    int where = -1;
+    const double d = eval_.triangleDeviation(P[0], P[1], P[2], where);
+    if (d >= 0) {
+      double u = 0, w = 0;
+      eval_.blend(3, kCentroid, c.u, c.w, u, w);
+      const double corresponding = eval_.point(u, w).Distance(gp_Pnt((P[0].XYZ() + P[1].XYZ() + P[2].XYZ()) / 3));
+      const bool wrapped = corresponding > longest;
+      r.deviation = static_cast<float>(wrapped ? corresponding : d);
+      r.worstSample = static_cast<std::uint8_t>(wrapped || where < 0 ? 0 : 1 + where);
+      return;
+    }
+  }
   // Chordal: samples of the flat triangle projected onto the surface. The corresponding-point
   // distance |S(uv) - M| at the same samples guards the other direction: a triangle whose UV region
   // maps far from it (spanning a seam, or collapsed on a pole with a whole sector behind it) does not
   // cover its part of the surface, however close its own points are.
-  {
-    static const double kCentroid[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
-    pending.worst = sample(c, kCentroid, pending.corresponding);
-  }
+  pending.worst = sample(c, kCentroid, pending.corresponding);
   if (freeform_) {
     // Free-form surfaces can bend inside a triangle between the centroid and the edge midpoints
     // (bumps narrower than the triangle): the barycentric grid of step 1/4 as the measurement uses,
@@ -737,7 +752,7 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
 }
 
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
-  const double chordal = kDeviationMargin * level.chordal;
+  const double chordal = (exactDeviation_ ? kExactDeviationMargin : kDeviationMargin) * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
   const AngleSplit angleSplit{static_cast<float>(std::cos(level.angleRad * (1 + 1e-6))), static_cast<float>(minSize)};
   std::vector<gp_Pnt2d> uvs;

@@ -28,6 +28,10 @@ class WorkSharing;
 // most, not all, of a segment's or triangle's deviation (a quadratic deviation peaks within ~15% of
 // its largest sampled value).
 constexpr double kDeviationMargin = 0.85;
+// Where a triangle's deviation is computed exactly (planes, cylinders, spheres: see
+// ElementaryDistance::triangleDeviation) only rounding and edge points a hair off the surface
+// separate it from the measured one.
+constexpr double kExactDeviationMargin = 0.98;
 
 struct FaceMesherSettings {
   double finalChordal = 0;   // the fallback mesher's tolerance; UV gaps below a tenth of it close silently
@@ -150,6 +154,7 @@ class FaceMesher {
   std::vector<std::string> repairs_;
   bool fallback_ = false;
   bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely
+  bool exactDeviation_ = false;  // triangles' deviations in closed form, not sampled
   FaceStatus fallbackStatus_ = FaceStatus::kFallback;
   int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
   // Scratch.

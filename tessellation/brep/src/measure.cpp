@@ -20,8 +20,14 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
       {1.0 / 3, 1.0 / 3, 1.0 / 3}, {.75, .25, 0}, {.5, .5, 0}, {.25, .75, 0}, {0, .75, .25}, {0, .5, .5}, {0, .25, .75},
       {.25, 0, .75}, {.5, 0, .5}, {.75, 0, .25}, {.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}};
   double worst = 0;
+  const bool exact = eval.exactTriangleDeviation();
   for (std::size_t t = 0; t < triangles; ++t) {
     const std::uint32_t v[3] = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
+    if (exact) {  // planes, cylinders, spheres: the largest distance itself, not only at the samples
+      auto corner = [&](int i) { return gp_Pnt(positions[3 * v[i]], positions[3 * v[i] + 1], positions[3 * v[i] + 2]); };
+      int where = -1;
+      worst = std::max(worst, eval.triangleDeviation(corner(0), corner(1), corner(2), where));
+    }
     for (const auto& b : kSamples) {
       gp_XYZ m(0, 0, 0);
       double u = 0, w = 0;

@@ -10,7 +10,9 @@
 namespace cetview::brep {
 
 // Largest distance from the triangles to the surface: 13 samples per triangle projected by Newton
-// from their interpolated (u, v). positions xyz and uv per vertex; idx three per triangle.
+// from their interpolated (u, v), and on planes, cylinders and spheres also the exact largest
+// distance of each triangle (SurfaceEval::triangleDeviation). positions xyz and uv per vertex; idx
+// three per triangle.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
                         std::size_t triangles);
 

@@ -48,6 +48,12 @@ class SurfaceEval {
   // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
   // A start point within `enough` of m ends it there: |S(u, v) - m| bounds the distance from above.
   double projectOnce(const gp_Pnt& m, double u, double v, double* start, double enough = 0) const;
+  // Planes, cylinders and spheres: the largest distance from the flat triangle to the surface in
+  // closed form (ElementaryDistance::triangleDeviation), not from samples.
+  bool exactTriangleDeviation() const { return elementary_.hasTriangleDeviation(); }
+  double triangleDeviation(const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c, int& where) const {
+    return elementary_.triangleDeviation(a.XYZ(), b.XYZ(), c.XYZ(), where);
+  }
 
   // Scaled UV (DESIGN.md step 3): x = (u - u0) * su, y = (v - v0) * sv, where su, sv are the mean
   // 3D lengths of a unit step in u and v over the face, so the Delaunay criterion in (x, y) judges

@@ -21,7 +21,8 @@ struct FaceQuality {
 
 // Measures level `level` of every face (each face's last level for -1). The deviation is sampled at
 // 13 points of every triangle (the centroid and a barycentric grid of step 1/4 without the corners),
-// each projected onto the exact surface by Newton iteration from its interpolated (u, v).
+// each projected onto the exact surface by Newton iteration from its interpolated (u, v); on planes,
+// cylinders and spheres it is also computed exactly per triangle (the largest distance in closed form).
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level = -1, unsigned threads = 1);
 
 // The same measure per triangle (the viewer's deviation heat map): out[f][i] is the deviation of
