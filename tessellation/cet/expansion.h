@@ -56,6 +56,12 @@ struct Expansion {
   std::size_t n = 0;  // number of components in use; 0 means the value 0
 
   double sign() const { return n == 0 ? 0.0 : c[n - 1]; }
+  // The value rounded (components summed smallest first): within a few ulps of it.
+  double estimate() const {
+    double v = 0.0;
+    for (std::size_t i = 0; i < n; ++i) v += c[i];
+    return v;
+  }
 };
 
 // The expansion x + y of a rounded result x and its error y, zero components left out.

@@ -1,7 +1,8 @@
 // Exact orient2d / incircle, after Shewchuk's adaptive scheme: a floating-point filter (his error
 // bounds A), then the determinant of the rounded coordinate differences evaluated exactly (his stage
-// B, with bounds derived below), and the full expansion of the original coordinates only when that
-// cannot decide either.
+// B, with bounds derived below), for incircle his stage C (B's value plus the first-order terms of
+// the differences' rounding errors: co-circular points of CAD circles, rounded, end there), and the
+// full expansion of the original coordinates only when none of them can decide.
 #include "predicates.h"
 
 #include <atomic>
@@ -23,6 +24,10 @@ constexpr double kIncircleBound = (10.0 + 96.0 * kEpsilon) * kEpsilon;
 // room covers both.
 constexpr double kOrientBoundB = 3.0 * kEpsilon;
 constexpr double kIncircleBoundB = 5.0 * kEpsilon;
+// Stage C (Shewchuk's error bounds for it): the first-order tail terms leave out terms of order
+// eps^2 of the permanent; the value of stage B's expansion is off by a few eps of itself.
+constexpr double kIncircleBoundC = (10.0 + 96.0 * kEpsilon) * kEpsilon * kEpsilon;
+constexpr double kResultBound = (3.0 + 8.0 * kEpsilon) * kEpsilon;
 
 std::atomic<unsigned long long> gOrientExact{0};
 std::atomic<unsigned long long> gIncircleExact{0};
@@ -66,13 +71,13 @@ double incircleExact(Point2 a, Point2 b, Point2 c, Point2 d) {
 
 // A coordinate difference rounded to a double, and whether the rounding lost anything.
 struct Rounded {
-  double value;
+  double value, tail;  // the difference is value + tail exactly
   bool inexact;
 };
 Rounded roundedDifference(double a, double b) {
   double value, tail;
   exact::twoDiff(a, b, value, tail);
-  return Rounded{value, tail != 0.0};
+  return Rounded{value, tail, tail != 0.0};
 }
 
 // x * y - z * w, exactly.
@@ -146,9 +151,23 @@ double incircleIfNothingRounds(double adx, double ady, double bdx, double bdy, d
   const Expansion<4> aLift = sum(exactProduct(adx.value, adx.value), exactProduct(ady.value, ady.value));
   const Expansion<4> bLift = sum(exactProduct(bdx.value, bdx.value), exactProduct(bdy.value, bdy.value));
   const Expansion<4> cLift = sum(exactProduct(cdx.value, cdx.value), exactProduct(cdy.value, cdy.value));
-  const double det = sum(sum(product(aLift, bc), product(bLift, ca)), product(cLift, ab)).sign();
+  const auto stageB = sum(sum(product(aLift, bc), product(bLift, ca)), product(cLift, ab));
+  double det = stageB.sign();
   if (!inexact) return det;
   if (std::fabs(det) > kIncircleBoundB * permanent) return det;
+  // Stage C: the first-order terms of the differences' rounding errors (their tails) added to the
+  // value of stage B's determinant; what is left out is second order in them.
+  det = stageB.estimate();
+  const double adxt = adx.tail, adyt = ady.tail, bdxt = bdx.tail, bdyt = bdy.tail, cdxt = cdx.tail, cdyt = cdy.tail;
+  const double ax = adx.value, ay = ady.value, bx = bdx.value, by = bdy.value, cx = cdx.value, cy = cdy.value;
+  const double boundC = kIncircleBoundC * permanent + kResultBound * std::fabs(det);
+  det += ((ax * ax + ay * ay) * ((bx * cdyt + cy * bdxt) - (by * cdxt + cx * bdyt)) +
+          2.0 * (ax * adxt + ay * adyt) * (bx * cy - by * cx)) +
+         ((bx * bx + by * by) * ((cx * adyt + ay * cdxt) - (cy * adxt + ax * cdyt)) +
+          2.0 * (bx * bdxt + by * bdyt) * (cx * ay - cy * ax)) +
+         ((cx * cx + cy * cy) * ((ax * bdyt + by * adxt) - (ay * bdxt + bx * adyt)) +
+          2.0 * (cx * cdxt + cy * cdyt) * (ax * by - ay * bx));
+  if (std::fabs(det) >= boundC) return det;
   return incircleExact(a, b, c, d);
 }
 

@@ -71,6 +71,7 @@ TEST(Predicates, FullExpansionOnlyWhereDifferencesRound) {
   EXPECT_EQ(sign(orient2d(a, b, c)), referenceOrient(a, b, c));
   // Points of a circle about (0.3, 0.7), rounded: some differences round (no two coordinates within
   // a factor of two of each other), and some quadruples are too nearly co-circular for stage B.
+  // Stage C (the differences' rounding errors to first order) decides them: no full expansion.
   for (int k = 0; k < 64; ++k) {
     Point2 q[4];
     for (int i = 0; i < 4; ++i) {
@@ -81,7 +82,15 @@ TEST(Predicates, FullExpansionOnlyWhereDifferencesRound) {
   }
   const PredicateStats roundedDifferences = predicateStats();
   EXPECT_GT(roundedDifferences.orientFullExpansion, exactDifferences.orientFullExpansion);
-  EXPECT_GT(roundedDifferences.incircleFullExpansion, exactDifferences.incircleFullExpansion);
+  EXPECT_GT(roundedDifferences.incircleExact, exactDifferences.incircleExact);
+  EXPECT_EQ(roundedDifferences.incircleFullExpansion, exactDifferences.incircleFullExpansion);
+  // Exactly co-circular (radius 5 (1 + e), exact in binary) with differences that round (9 + 9e needs
+  // 54 bits): stages B and C can only bound the determinant; the full expansion shows it is zero.
+  const double e = std::ldexp(1.0, -50);
+  const Point2 p{5 + 5 * e, 0}, q{3 + 3 * e, 4 + 4 * e}, r{0, 5 + 5 * e}, s{-4 - 4 * e, 3 + 3 * e};
+  EXPECT_EQ(referenceIncircle(p, q, r, s), 0);
+  EXPECT_EQ(incircle(p, q, r, s), 0.0);
+  EXPECT_GT(predicateStats().incircleFullExpansion, roundedDifferences.incircleFullExpansion);
 }
 
 TEST(Predicates, NearlyCoCircularOnRoundedCircles) {
@@ -89,12 +98,14 @@ TEST(Predicates, NearlyCoCircularOnRoundedCircles) {
   std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
   std::uniform_int_distribution<int> ulps(-4, 4);
   int zero = 0, nonZero = 0;
+  // About the origin, and off it (more of the differences round: stages B and C both work).
+  for (const Point2 centre : {Point2{0, 0}, Point2{0.3, -1.7}})
   for (double scale : {1e-12, 1e-3, 1.0, 1e5, 1e12}) {
     for (int k = 0; k < 4000; ++k) {
       Point2 p[4];
       for (auto& q : p) {
         const double t = angle(rng);
-        q = {scale * std::cos(t), scale * std::sin(t)};
+        q = {scale * (centre.x + std::cos(t)), scale * (centre.y + std::sin(t))};
       }
       // Nudge d by a few ulps so it falls just inside, on, or just outside.
       p[3].x = std::nextafter(p[3].x, ulps(rng) > 0 ? 1e300 : -1e300);
