@@ -57,8 +57,9 @@ double ElementaryDistance::operator()(const gp_Pnt& m) const {
     case GeomAbs_Torus:
       // The plane through the axis and m cuts the torus in two circles of the minor radius, about
       // (+major, 0) and (-major, 0); both matter when the minor radius is the larger (a spindle torus).
-      return std::min(std::abs(std::hypot(radial - radius_, along) - minor_),
-                      std::abs(std::hypot(radial + radius_, along) - minor_));
+      // (Plain square roots: std::hypot's overflow care costs several times as much.)
+      return std::min(std::abs(std::sqrt((radial - radius_) * (radial - radius_) + along * along) - minor_),
+                      std::abs(std::sqrt((radial + radius_) * (radial + radius_) + along * along) - minor_));
     default:
       return -1;
   }

@@ -379,15 +379,20 @@ FaceMesher::Corners FaceMesher::corners(cet::TriangleId t, const FaceMesh& mesh)
   return c;
 }
 
-double FaceMesher::sample(const Corners& c, const double b[3], double& corresponding) const {
+double FaceMesher::sample(const Corners& c, const double b[3], double& corresponding, bool centroid) const {
+  const gp_Pnt M(b[0] * c.p[0].XYZ() + b[1] * c.p[1].XYZ() + b[2] * c.p[2].XYZ());
+  corresponding = 0;
+  // On elementary surfaces the distance is in closed form, and the corresponding-point guard (a
+  // surface evaluation) is taken at the centroid only: a triangle whose UV region wraps around a
+  // periodic direction away from its corners has its centroid there, and the apex of a cone
+  // collapses triangles, which keep every sample's.
+  if (eval_.closedFormDistance() && !centroid && !c.collapsed) return eval_.projectOnce(M, 0, 0, nullptr);
   // A sample whose own surface point is already within the final tolerance passes on every level
   // (each is at least as coarse): no need to find its foot.
   const double enough = kDeviationMargin * settings_.finalChordal;
   double u = 0, w = 0;
   eval_.blend(3, b, c.u, c.w, u, w);
-  const gp_Pnt M(b[0] * c.p[0].XYZ() + b[1] * c.p[1].XYZ() + b[2] * c.p[2].XYZ());
   if (c.collapsed) return corresponding = eval_.point(u, w).Distance(M);
-  corresponding = 0;
   return eval_.projectOnce(M, u, w, &corresponding, enough);
 }
 
@@ -398,7 +403,7 @@ void FaceMesher::sampleEdge(const Corners& c, int i, double& worst, double& corr
     double b[3] = {0, 0, 0};
     b[(i + 1) % 3] = f, b[(i + 2) % 3] = 1 - f;
     double cd = 0;
-    worst = std::max(worst, sample(c, b, cd));
+    worst = std::max(worst, sample(c, b, cd, false));
     corresponding = std::max(corresponding, cd);
   }
 }
@@ -481,7 +486,7 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
   // distance |S(uv) - M| at the same samples guards the other direction: a triangle whose UV region
   // maps far from it (spanning a seam, or collapsed on a pole with a whole sector behind it) does not
   // cover its part of the surface, however close its own points are.
-  pending.worst = sample(c, kCentroid, pending.corresponding);
+  pending.worst = sample(c, kCentroid, pending.corresponding, true);
   if (freeform_) {
     // Free-form surfaces can bend inside a triangle between the centroid and the edge midpoints
     // (bumps narrower than the triangle): the barycentric grid of step 1/4 as the measurement uses,
@@ -489,7 +494,7 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     static const double kInner[3][3] = {{.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}};
     for (const auto& b : kInner) {
       double cd = 0;
-      const double d = sample(c, b, cd);
+      const double d = sample(c, b, cd, false);
       pending.worst = std::max(pending.worst, d), pending.corresponding = std::max(pending.corresponding, cd);
     }
   }

@@ -100,8 +100,8 @@ class FaceMesher {
   };
   Corners corners(cet::TriangleId t, const FaceMesh& mesh) const;
   // Distance from the point of the flat triangle at barycentric b to the surface (and the
-  // corresponding-point distance |S(uv) - M|).
-  double sample(const Corners& c, const double b[3], double& corresponding) const;
+  // corresponding-point distance |S(uv) - M|; on elementary surfaces at the centroid only, else 0).
+  double sample(const Corners& c, const double b[3], double& corresponding, bool centroid) const;
   // Worst samples of edge i: its midpoint (and quarter points on free-form surfaces).
   void sampleEdge(const Corners& c, int i, double& worst, double& corresponding) const;
   // Measures triangle t into r; chordal samples are skipped when angleSplit splits it anyway.

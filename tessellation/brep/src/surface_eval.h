@@ -48,6 +48,8 @@ class SurfaceEval {
   // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
   // A start point within `enough` of m ends it there: |S(u, v) - m| bounds the distance from above.
   double projectOnce(const gp_Pnt& m, double u, double v, double* start, double enough = 0) const;
+  // Planes, cylinders, cones, spheres and tori: projectOnce() is the distance in closed form.
+  bool closedFormDistance() const { return elementary_.valid(); }
   // Planes, cylinders and spheres: the largest distance from the flat triangle to the surface in
   // closed form (ElementaryDistance::triangleDeviation), not from samples.
   bool exactTriangleDeviation() const { return elementary_.hasTriangleDeviation(); }
