@@ -108,7 +108,8 @@ void BSplineDirect::buildPatches() {
   if (std::max(p, q) < kCacheDegree) return;
   const std::size_t spansU = static_cast<std::size_t>(u_.poles - p), spansV = static_cast<std::size_t>(v_.poles - q);
   const std::size_t perPatch = static_cast<std::size_t>(4 * (p + 1) * (q + 1));
-  if (spansU * spansV * perPatch > kCacheDoubles) return;
+  const std::size_t doubles = spansU * spansV * perPatch;
+  if (doubles > kCacheDoubles || doubles > kCacheRatio * poles_.size()) return;
   u_.buildPower();
   v_.buildPower();
   patches_.assign(spansU * spansV * perPatch, 0.0);

@@ -70,7 +70,10 @@ class BSplineDirect {
   // patch in powers of the local parameters, poles folded in, built once (immutable after), so a
   // point costs two nested Horner schemes instead of the basis functions and their weighted sum.
   static constexpr int kCacheDegree = 4;
-  static constexpr std::size_t kCacheDoubles = std::size_t(1) << 18;  // 2 MiB per surface at most
+  // At most this many times the poles' own memory (a single span's patch is the size of its poles;
+  // many small spans of high degree would multiply it), and 2 MiB.
+  static constexpr std::size_t kCacheRatio = 4;
+  static constexpr std::size_t kCacheDoubles = std::size_t(1) << 18;
   void buildPatches();
   template <bool kDerivatives>
   void evaluatePatch(double u, double v, int su, int sv, double* out) const;
