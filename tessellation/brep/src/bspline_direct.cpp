@@ -42,145 +42,25 @@ std::unique_ptr<BSplineDirect> BSplineDirect::create(const Handle(Geom_BSplineSu
 
 namespace {
 
-// The degree-d basis functions N_{s-d..s} at t in span s of the flat knots U (the triangular scheme,
-// dividing as it goes: set-up only). Coincident knots contribute nothing.
-void basisOfDegree(const double* U, int d, int s, double t, double* N) {
-  double left[BSplineDirect::kMaxDegree + 1], right[BSplineDirect::kMaxDegree + 1];
-  N[0] = 1.0;
+// The reciprocals of the knot differences the degree-d basis functions of span s divide by (see
+// basis() below): round j, term r: 1 / (U[s+r+1] - U[s+r+1-j]), 0 for coincident knots.
+void knotReciprocals(const double* U, int d, int s, double* inv) {
   for (int j = 1; j <= d; ++j) {
-    left[j] = t - U[s + 1 - j];
-    right[j] = U[s + j] - t;
-    double saved = 0.0;
     for (int r = 0; r < j; ++r) {
-      const double den = right[r + 1] + left[j - r];
-      const double temp = den != 0.0 ? N[r] / den : 0.0;
-      N[r] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
+      const double den = U[s + r + 1] - U[s + r + 1 - j];
+      inv[j * (j - 1) / 2 + r] = den > 0 ? 1.0 / den : 0.0;
     }
-    N[j] = saved;
   }
 }
 
 }  // namespace
-
-void BSplineDirect::Direction::buildPower() {
-  // Taylor coefficients at the span's midpoint: the k-th derivative of N_i comes from the k-th
-  // derivative curve of the unit control vector e_i (degree p - k, control points by differences,
-  // The NURBS Book 3.3), evaluated there and scaled by length^k / k!.
-  const int p = degree, n = p + 1, spans = poles - degree;
-  power.assign(static_cast<std::size_t>(spans * n * n), 0.0);
-  mid.assign(static_cast<std::size_t>(spans), 0.0);
-  length.assign(static_cast<std::size_t>(spans), 0.0);
-  const double* U = knots.data();
-  for (int s = p; s < poles; ++s) {
-    const double h = U[s + 1] - U[s];
-    const std::size_t si = static_cast<std::size_t>(s - p);
-    mid[si] = 0.5 * (U[s] + U[s + 1]), length[si] = h;
-    if (!(h > 0)) continue;
-    double* A = power.data() + si * static_cast<std::size_t>(n * n);
-    for (int j = 0; j < n; ++j) {
-      double c[kMaxDegree + 1] = {};  // control values on global indices s-p .. s (local r)
-      c[j] = 1.0;
-      double scale = 1.0;  // length^k / k!
-      for (int k = 0; k <= p; ++k) {
-        if (k > 0) {
-          // Derivative control points of degree p - k + 1 -> p - k, on local indices k .. p.
-          const int q = p - k + 1;
-          for (int r = p; r >= k; --r) {
-            const int i = s - p + r;
-            const double den = U[i + q] - U[i];
-            c[r] = den != 0.0 ? q * (c[r] - c[r - 1]) / den : 0.0;
-          }
-          scale *= h / k;
-        }
-        double N[kMaxDegree + 1];
-        basisOfDegree(U, p - k, s, mid[si], N);  // N_{s-(p-k) .. s}
-        double value = 0.0;
-        for (int r = k; r <= p; ++r) value += c[r] * N[r - k];
-        A[j * n + k] = value * scale;
-      }
-    }
-  }
-}
-
-void BSplineDirect::buildPatches() {
-  const int p = u_.degree, q = v_.degree;
-  if (std::max(p, q) < kCacheDegree) return;
-  const std::size_t spansU = static_cast<std::size_t>(u_.poles - p), spansV = static_cast<std::size_t>(v_.poles - q);
-  const std::size_t perPatch = static_cast<std::size_t>(4 * (p + 1) * (q + 1));
-  const std::size_t doubles = spansU * spansV * perPatch;
-  if (doubles > kCacheDoubles || doubles > kCacheRatio * poles_.size()) return;
-  u_.buildPower();
-  v_.buildPower();
-  patches_.assign(spansU * spansV * perPatch, 0.0);
-  const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
-  const int nu = p + 1, nv = q + 1;
-  for (std::size_t a = 0; a < spansU; ++a) {
-    const double* Au = u_.power.data() + a * static_cast<std::size_t>(nu * nu);
-    for (std::size_t b = 0; b < spansV; ++b) {
-      const double* Av = v_.power.data() + b * static_cast<std::size_t>(nv * nv);
-      double* C = patches_.data() + (a * spansV + b) * perPatch;
-      // C[k][l] = sum over i, j of Au[i][k] Av[j][l] P[a + i][b + j] (span a's first pole is a).
-      for (int i = 0; i < nu; ++i) {
-        for (int j = 0; j < nv; ++j) {
-          const double* P = poles_.data() + (a + static_cast<std::size_t>(i)) * rowStride + 4 * (b + static_cast<std::size_t>(j));
-          for (int k = 0; k < nu; ++k) {
-            const double wu = Au[i * nu + k];
-            if (wu == 0.0) continue;
-            for (int l = 0; l < nv; ++l) {
-              const double w = wu * Av[j * nv + l];
-              double* c = C + 4 * (k * nv + l);
-              c[0] += w * P[0], c[1] += w * P[1], c[2] += w * P[2], c[3] += w * P[3];
-            }
-          }
-        }
-      }
-    }
-  }
-}
-
-template <bool kDerivatives>
-void BSplineDirect::evaluatePatch(double u, double v, int su, int sv, double* out) const {
-  const int p = u_.degree, q = v_.degree, nv = q + 1;
-  const std::size_t a = static_cast<std::size_t>(su - p), b = static_cast<std::size_t>(sv - q);
-  const std::size_t spansV = static_cast<std::size_t>(v_.poles - q);
-  const double* C = patches_.data() + (a * spansV + b) * static_cast<std::size_t>(4 * (p + 1) * nv);
-  const double hu = u_.length[a], hv = v_.length[b];
-  const double x = (u - u_.mid[a]) / hu, y = (v - v_.mid[b]) / hv;
-  double s[4] = {0, 0, 0, 0}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
-  for (int k = p; k >= 0; --k) {
-    // Row k in y by Horner, with its y derivative.
-    const double* row = C + 4 * static_cast<std::size_t>(k * nv);
-    double r[4] = {row[4 * q], row[4 * q + 1], row[4 * q + 2], row[4 * q + 3]}, dr[4] = {0, 0, 0, 0};
-    for (int l = q - 1; l >= 0; --l) {
-      for (int c = 0; c < 4; ++c) {
-        if (kDerivatives) dr[c] = dr[c] * y + r[c];
-        r[c] = r[c] * y + row[4 * l + c];
-      }
-    }
-    // Then in x.
-    for (int c = 0; c < 4; ++c) {
-      if (kDerivatives) su4[c] = su4[c] * x + s[c], sv4[c] = sv4[c] * x + dr[c];
-      s[c] = s[c] * x + r[c];
-    }
-  }
-  for (int c = 0; c < 4; ++c) out[c] = s[c];
-  if (kDerivatives)
-    for (int c = 0; c < 4; ++c) out[4 + c] = su4[c] / hu, out[8 + c] = sv4[c] / hv;
-}
 
 void BSplineDirect::Direction::index() {
   const int first = degree, last = poles - 1;  // spans
   const int perSpan = degree * (degree + 1) / 2;
   inverse.assign(static_cast<std::size_t>((last - first + 1) * perSpan), 0.0);
   for (int s = first; s <= last; ++s) {
-    double* inv = inverse.data() + (s - first) * perSpan;
-    for (int j = 1; j <= degree; ++j) {
-      for (int r = 0; r < j; ++r) {
-        const double d = knots[static_cast<std::size_t>(s + r + 1)] - knots[static_cast<std::size_t>(s + r + 1 - j)];
-        inv[j * (j - 1) / 2 + r] = d > 0 ? 1.0 / d : 0.0;
-      }
-    }
+    knotReciprocals(knots.data(), degree, s, inverse.data() + (s - first) * perSpan);
   }
   const double a = knots[static_cast<std::size_t>(first)], b = knots[static_cast<std::size_t>(last + 1)];
   const int buckets = 2 * (last - first + 1);
@@ -242,6 +122,114 @@ void basis(const double* U, const double* inverse, int degree, int s, double t, 
 }
 
 }  // namespace
+
+void BSplineDirect::Direction::buildPower() {
+  // Taylor coefficients at the span's midpoint: the k-th derivative of N_i comes from the k-th
+  // derivative curve of the unit control vector e_i (degree p - k, control points by differences,
+  // The NURBS Book 3.3), evaluated there and scaled by length^k / k!.
+  const int p = degree, n = p + 1, spans = poles - degree;
+  power.assign(static_cast<std::size_t>(spans * n * n), 0.0);
+  mid.assign(static_cast<std::size_t>(spans), 0.0);
+  length.assign(static_cast<std::size_t>(spans), 0.0);
+  const double* U = knots.data();
+  for (int s = p; s < poles; ++s) {
+    const double h = U[s + 1] - U[s];
+    const std::size_t si = static_cast<std::size_t>(s - p);
+    mid[si] = 0.5 * (U[s] + U[s + 1]), length[si] = h;
+    if (!(h > 0)) continue;
+    double* A = power.data() + si * static_cast<std::size_t>(n * n);
+    for (int j = 0; j < n; ++j) {
+      double c[kMaxDegree + 1] = {};  // control values on global indices s-p .. s (local r)
+      c[j] = 1.0;
+      double scale = 1.0;  // length^k / k!
+      for (int k = 0; k <= p; ++k) {
+        if (k > 0) {
+          // Derivative control points of degree p - k + 1 -> p - k, on local indices k .. p.
+          const int q = p - k + 1;
+          for (int r = p; r >= k; --r) {
+            const int i = s - p + r;
+            const double den = U[i + q] - U[i];
+            c[r] = den != 0.0 ? q * (c[r] - c[r - 1]) / den : 0.0;
+          }
+          scale *= h / k;
+        }
+        // N_{s-(p-k) .. s} at the midpoint.
+        double inv[kMaxDegree * (kMaxDegree + 1) / 2 + 1], N[kMaxDegree + 1];
+        knotReciprocals(U, p - k, s, inv);
+        basis<0>(U, inv, p - k, s, mid[si], N, nullptr);
+        double value = 0.0;
+        for (int r = k; r <= p; ++r) value += c[r] * N[r - k];
+        A[j * n + k] = value * scale;
+      }
+    }
+  }
+}
+
+void BSplineDirect::buildPatches() {
+  const int p = u_.degree, q = v_.degree;
+  if (std::max(p, q) < kPatchDegree) return;
+  const std::size_t spansU = static_cast<std::size_t>(u_.poles - p), spansV = static_cast<std::size_t>(v_.poles - q);
+  const std::size_t perPatch = static_cast<std::size_t>(4 * (p + 1) * (q + 1));
+  const std::size_t doubles = spansU * spansV * perPatch;
+  if (doubles > kPatchDoubles || doubles > kPatchRatio * poles_.size()) return;
+  u_.buildPower();
+  v_.buildPower();
+  patches_.assign(spansU * spansV * perPatch, 0.0);
+  const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
+  const int nu = p + 1, nv = q + 1;
+  for (std::size_t a = 0; a < spansU; ++a) {
+    const double* Au = u_.power.data() + a * static_cast<std::size_t>(nu * nu);
+    for (std::size_t b = 0; b < spansV; ++b) {
+      const double* Av = v_.power.data() + b * static_cast<std::size_t>(nv * nv);
+      double* C = patches_.data() + (a * spansV + b) * perPatch;
+      // C[k][l] = sum over i, j of Au[i][k] Av[j][l] P[a + i][b + j] (span a's first pole is a).
+      for (int i = 0; i < nu; ++i) {
+        for (int j = 0; j < nv; ++j) {
+          const double* P = poles_.data() + (a + static_cast<std::size_t>(i)) * rowStride + 4 * (b + static_cast<std::size_t>(j));
+          for (int k = 0; k < nu; ++k) {
+            const double wu = Au[i * nu + k];
+            if (wu == 0.0) continue;
+            for (int l = 0; l < nv; ++l) {
+              const double w = wu * Av[j * nv + l];
+              double* c = C + 4 * (k * nv + l);
+              c[0] += w * P[0], c[1] += w * P[1], c[2] += w * P[2], c[3] += w * P[3];
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+template <bool kDerivatives>
+void BSplineDirect::evaluatePatch(double u, double v, int su, int sv, double* out) const {
+  const int p = u_.degree, q = v_.degree, nv = q + 1;
+  const std::size_t a = static_cast<std::size_t>(su - p), b = static_cast<std::size_t>(sv - q);
+  const std::size_t spansV = static_cast<std::size_t>(v_.poles - q);
+  const double* C = patches_.data() + (a * spansV + b) * static_cast<std::size_t>(4 * (p + 1) * nv);
+  const double hu = u_.length[a], hv = v_.length[b];
+  const double x = (u - u_.mid[a]) / hu, y = (v - v_.mid[b]) / hv;
+  double s[4] = {0, 0, 0, 0}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
+  for (int k = p; k >= 0; --k) {
+    // Row k in y by Horner, with its y derivative.
+    const double* row = C + 4 * static_cast<std::size_t>(k * nv);
+    double r[4] = {row[4 * q], row[4 * q + 1], row[4 * q + 2], row[4 * q + 3]}, dr[4] = {0, 0, 0, 0};
+    for (int l = q - 1; l >= 0; --l) {
+      for (int c = 0; c < 4; ++c) {
+        if (kDerivatives) dr[c] = dr[c] * y + r[c];
+        r[c] = r[c] * y + row[4 * l + c];
+      }
+    }
+    // Then in x.
+    for (int c = 0; c < 4; ++c) {
+      if (kDerivatives) su4[c] = su4[c] * x + s[c], sv4[c] = sv4[c] * x + dr[c];
+      s[c] = s[c] * x + r[c];
+    }
+  }
+  for (int c = 0; c < 4; ++c) out[c] = s[c];
+  if (kDerivatives)
+    for (int c = 0; c < 4; ++c) out[4 + c] = su4[c] / hu, out[8 + c] = sv4[c] / hv;
+}
 
 template <bool kDerivatives, int PU, int PV>
 void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {

@@ -34,6 +34,9 @@ class BSplineDirect {
 
   static constexpr int kMaxDegree = 25;  // OpenCASCADE's own limit
 
+  // Whether points go through the polynomial patches (see buildPatches), for tests.
+  bool usesPatches() const { return !patches_.empty(); }
+
   // Index of the knot span holding the parameter (the first span for parameters before it, the
   // last for those past it: they are evaluated on its polynomial, as OpenCASCADE does). Spans are
   // indices into the flat knot sequence: degree .. poles - 1.
@@ -66,14 +69,14 @@ class BSplineDirect {
     void buildPower();
   };
   BSplineDirect() = default;
-  // High degrees (kCacheDegree or more either way) with few spans: each pair of spans' polynomial
+  // High degrees (kPatchDegree or more either way) with few spans: each pair of spans' polynomial
   // patch in powers of the local parameters, poles folded in, built once (immutable after), so a
   // point costs two nested Horner schemes instead of the basis functions and their weighted sum.
-  static constexpr int kCacheDegree = 4;
+  static constexpr int kPatchDegree = 4;
   // At most this many times the poles' own memory (a single span's patch is the size of its poles;
   // many small spans of high degree would multiply it), and 2 MiB.
-  static constexpr std::size_t kCacheRatio = 4;
-  static constexpr std::size_t kCacheDoubles = std::size_t(1) << 18;
+  static constexpr std::size_t kPatchRatio = 4;
+  static constexpr std::size_t kPatchDoubles = std::size_t(1) << 18;
   void buildPatches();
   template <bool kDerivatives>
   void evaluatePatch(double u, double v, int su, int sv, double* out) const;

@@ -483,9 +483,10 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     }
   }
   // Chordal: samples of the flat triangle projected onto the surface. The corresponding-point
-  // distance |S(uv) - M| at the same samples guards the other direction: a triangle whose UV region
-  // maps far from it (spanning a seam, or collapsed on a pole with a whole sector behind it) does not
-  // cover its part of the surface, however close its own points are.
+  // distance |S(uv) - M| at the same samples (on cones and tori at the centroid only: see sample())
+  // guards the other direction: a triangle whose UV region maps far from it (spanning a seam, or
+  // collapsed on a pole with a whole sector behind it) does not cover its part of the surface,
+  // however close its own points are.
   pending.worst = sample(c, kCentroid, pending.corresponding, true);
   if (freeform_) {
     // Free-form surfaces can bend inside a triangle between the centroid and the edge midpoints
