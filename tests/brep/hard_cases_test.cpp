@@ -18,6 +18,7 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <GeomAPI_Interpolate.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <BRepLib.hxx>
 #include <Geom2d_Line.hxx>
@@ -292,6 +293,52 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
     const std::size_t triangles = t->triangleCount(t->lastLevel());
     std::printf("%s: %zu triangles\n", strip.name, triangles);
     EXPECT_LE(triangles, strip.most);
+  }
+}
+
+// A wing's skin between two ribs, as IGES files carry it: a cubic B-spline profile (chord 1)
+// extruded 5 along z as a degree-1 B-spline surface, bounded by its iso-lines. Its triangles run
+// from rib to rib: every vertex lies on one of the two ribs. With the stretch capped at 30:1, as on
+// developable faces with curved outlines, it had rows of points in between (dealii's wing: 386
+// triangles where BRepMesh makes 132; now 82).
+TEST(HardCases, BSplineSkinBetweenRibsIsOneStrip) {
+  Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, 6);
+  pts->SetValue(1, gp_Pnt(1, 0, 0));
+  pts->SetValue(2, gp_Pnt(0.6, 0.07, 0));
+  pts->SetValue(3, gp_Pnt(0.3, 0.09, 0));
+  pts->SetValue(4, gp_Pnt(0.1, 0.06, 0));
+  pts->SetValue(5, gp_Pnt(0.02, 0.025, 0));
+  pts->SetValue(6, gp_Pnt(0, 0, 0));
+  GeomAPI_Interpolate interp(pts, Standard_False, 1e-7);
+  interp.Perform();
+  ASSERT_TRUE(interp.IsDone());
+  const Handle(Geom_BSplineCurve) profile = interp.Curve();
+  const int n = profile->NbPoles();
+  TColgp_Array2OfPnt poles(1, n, 1, 2);
+  for (int i = 1; i <= n; ++i) {
+    poles(i, 1) = profile->Pole(i);
+    poles(i, 2) = profile->Pole(i).Translated(gp_Vec(0, 0, 5));
+  }
+  TColStd_Array1OfReal uKnots(1, profile->NbKnots()), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, profile->NbKnots()), vMults(1, 2);
+  profile->Knots(uKnots);
+  profile->Multiplicities(uMults);
+  vKnots(1) = 0, vKnots(2) = 1, vMults(1) = vMults(2) = 2;
+  const Handle(Geom_BSplineSurface) skin =
+      new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, profile->Degree(), 1);
+  auto model = test::loadShape(BRepBuilderAPI_MakeFace(skin, 1e-7).Face(), "skin");
+  ASSERT_TRUE(model);
+  for (double d : {0.001, 0.0002}) {
+    SCOPED_TRACE("deflection " + std::to_string(d));
+    auto t = test::tessellateAndCheck(*model, test::absolute(d));
+    ASSERT_TRUE(t);
+    const FaceMesh& mesh = t->faceMesh(0);
+    std::size_t inside = 0;
+    for (std::uint32_t index : mesh.levels.back()) {
+      const double v = mesh.uv[2 * index + 1];
+      if (std::abs(v) > 1e-12 && std::abs(v - 1) > 1e-12) ++inside;
+    }
+    EXPECT_EQ(inside, 0u) << t->triangleCount(t->lastLevel()) << " triangles";
   }
 }
 

@@ -2,14 +2,19 @@
 // weighted where the curvature is directional so that triangles run along the flat direction: by
 // the square root of the curvature without tolerances, by the steps the tolerances allow with
 // them. Checked on a torus (up to 10:1 without tolerances; a thin one much further with them), on
-// a cylinder (1000:1 with tolerances), on the same torus written as a B-spline (a fillet as STEP
-// files carry them: free-form, up to 3:1) and on a B-spline sheet curved one way here and the
+// a cylinder (1000:1 with tolerances), on the cylinder written as a B-spline (as far between its
+// iso-lines, 30:1 within a curved outline), on the same torus written as a B-spline (a fillet as
+// STEP files carry them: free-form, up to 3:1) and on a B-spline sheet curved one way here and the
 // other way there (no stretch).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepLib.hxx>
+#include <Geom2d_Ellipse.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -18,6 +23,7 @@
 #include <Geom_ToroidalSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <gp_Ax3.hxx>
+#include <gp_Elips2d.hxx>
 
 #include "surface_eval.h"
 
@@ -40,12 +46,16 @@ void meanSpeeds(const SurfaceEval& eval, double& lu, double& lv) {
 }
 
 // How much more the flat direction (u, along the tube) is stretched than the curved one.
-double stretch(const Handle(Geom_Surface)& surface, double chordal = 0, double angleRad = 0) {
-  const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-7);
+double stretch(const TopoDS_Face& face, double chordal = 0, double angleRad = 0) {
   const SurfaceEval eval(face, chordal, angleRad);
   double lu = 0, lv = 0;
   meanSpeeds(eval, lu, lv);
   return (eval.sv / lv) / (eval.su / lu);
+}
+
+// The same on the whole surface (a face bounded by its iso-lines).
+double stretch(const Handle(Geom_Surface)& surface, double chordal = 0, double angleRad = 0) {
+  return stretch(BRepBuilderAPI_MakeFace(surface, 1e-7).Face(), chordal, angleRad);
 }
 
 const gp_Ax3 kFrame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1), gp_Dir(1, 0, 0));
@@ -107,14 +117,26 @@ TEST(UvScaling, WithTolerancesAThinTorusRunsFurtherThanTenToOne) {
   EXPECT_NEAR(stretch(patch, 0.02, 20 * M_PI / 180), expected, 1e-6 * expected);
 }
 
-TEST(UvScaling, WithTolerancesADevelopableBSplineRunsThirtyToOne) {
+TEST(UvScaling, WithTolerancesADevelopableBSplineRunsThirtyToOneWithinCurvedOutlines) {
   // The cylinder above as a B-spline (a wing's skin or a swept profile is the same kind of face:
-  // straight one way, untwisted): it stretches like the cylinder, up to 30:1. The free-form
-  // fillet's square-root rule (3:1 at most) had its triangles 10 times shorter than they may be.
+  // straight one way, untwisted): it stretches like the cylinder. Bounded by its iso-lines (a skin
+  // between two ribs) as far, up to 1000:1; within an outline that curves across the straight
+  // direction (here an ellipse in UV) up to 30:1, where the Delaunay triangulation cannot join
+  // three points of the outline. The free-form fillet's square-root rule (3:1 at most) had its
+  // triangles 10 times shorter than they may be.
   const Handle(Geom_BSplineSurface) tube = GeomConvert::SurfaceToBSplineSurface(
       new Geom_RectangularTrimmedSurface(new Geom_CylindricalSurface(kFrame, 0.5), 0.0, M_PI / 2, 0.0, 50.0));
   ASSERT_FALSE(tube.IsNull());
-  EXPECT_NEAR(stretch(tube, 0.01, 20 * M_PI / 180), 1.0 / 30, 1e-9);
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  tube->Bounds(u0, u1, v0, v1);
+  EXPECT_NEAR(stretch(tube, 0.01, 20 * M_PI / 180), 1e-3, 1e-12);
+  const gp_Elips2d outline(gp_Ax2d(gp_Pnt2d(0.5 * (u0 + u1), 0.5 * (v0 + v1)), gp_Dir2d(0, 1)), 0.4 * (v1 - v0), 0.4 * (u1 - u0));
+  BRepBuilderAPI_MakeFace oval(tube, BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(new Geom2d_Ellipse(outline), tube)).Wire(),
+                               Standard_True);
+  ASSERT_TRUE(oval.IsDone());
+  TopoDS_Face face = oval.Face();
+  BRepLib::BuildCurves3d(face);
+  EXPECT_NEAR(stretch(face, 0.01, 20 * M_PI / 180), 1.0 / 30, 1e-9);
   // Without tolerances, as every free-form face curved one way: the square-root rule.
   EXPECT_NEAR(stretch(tube), 1.0 / 3, 1e-9);
 }

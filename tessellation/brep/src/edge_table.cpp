@@ -14,6 +14,8 @@
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BezierCurve.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -41,6 +43,41 @@ double angleBetween(const gp_Vec& a, const gp_Vec& b) {
 }
 
 constexpr int kMaxDepth = 24;  // 2^24 segments per coarse segment: beyond any sane tolerance
+
+// A line, or a B-spline or Bezier curve whose poles all lie on the chord between the edge's ends
+// (the curve stays within their hull): a natural-bounds B-spline face's straight sides, which
+// OpenCASCADE writes as degree-1 B-splines.
+bool isStraight(const BRepAdaptor_Curve& curve, double first, double last) {
+  std::vector<gp_Pnt> poles;
+  switch (curve.GetType()) {
+    case GeomAbs_Line:
+      return true;
+    case GeomAbs_BSplineCurve: {
+      Handle(Geom_BSplineCurve) bspline = curve.BSpline();
+      for (int i = 1; i <= bspline->NbPoles(); ++i) poles.push_back(bspline->Pole(i));
+      break;
+    }
+    case GeomAbs_BezierCurve: {
+      Handle(Geom_BezierCurve) bezier = curve.Bezier();
+      for (int i = 1; i <= bezier->NbPoles(); ++i) poles.push_back(bezier->Pole(i));
+      break;
+    }
+    default:
+      return false;
+  }
+  const gp_Pnt a = curve.Value(first), b = curve.Value(last);
+  const gp_Vec chord(a, b);
+  const double length = chord.Magnitude();
+  if (!(length > 0)) return false;
+  const double tolerance = 1e-9 * length;
+  for (const gp_Pnt& p : poles) {
+    const gp_Vec ap(a, p);
+    const double along = ap.Dot(chord) / length;
+    if (along < -tolerance || along > length + tolerance) return false;
+    if (ap.Crossed(chord).Magnitude() / length > tolerance) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -86,7 +123,7 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
     if (info.degenerated) continue;
     try {
       BRepAdaptor_Curve curve(edge);
-      info.straight = curve.GetType() == GeomAbs_Line;
+      info.straight = isStraight(curve, info.first, info.last);
       if (v0.IsNull()) info.p0 = curve.Value(info.first);
       if (v1.IsNull()) info.p1 = curve.Value(info.last);
     } catch (const Standard_Failure&) {

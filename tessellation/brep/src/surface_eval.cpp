@@ -5,13 +5,65 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_BezierCurve.hxx>
 #include <GeomLib.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 
 namespace cetview::brep {
+
+namespace {
+
+// True when every edge of the face runs along an iso-line of the surface in UV (its pcurve a line
+// parallel to the u or the v axis, or a B-spline or Bezier curve whose poles all lie on one: the
+// curve stays within their hull): the face is a rectangle of its parameter plane, and no boundary
+// curves across a stretched direction.
+bool boundedByIsoLines(const TopoDS_Face& face, double uRange, double vRange) {
+  const double uTol = 1e-9 * uRange, vTol = 1e-9 * vRange;
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    if (BRep_Tool::Degenerated(edge)) continue;
+    double first = 0, last = 0;
+    Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+    if (pcurve.IsNull()) return false;
+    Geom2dAdaptor_Curve curve(pcurve, first, last);
+    std::vector<gp_Pnt2d> poles;
+    switch (curve.GetType()) {
+      case GeomAbs_Line: {
+        const gp_Pnt2d a = curve.Value(first), b = curve.Value(last);
+        poles = {a, b};
+        break;
+      }
+      case GeomAbs_BSplineCurve: {
+        Handle(Geom2d_BSplineCurve) bspline = curve.BSpline();
+        for (int i = 1; i <= bspline->NbPoles(); ++i) poles.push_back(bspline->Pole(i));
+        break;
+      }
+      case GeomAbs_BezierCurve: {
+        Handle(Geom2d_BezierCurve) bezier = curve.Bezier();
+        for (int i = 1; i <= bezier->NbPoles(); ++i) poles.push_back(bezier->Pole(i));
+        break;
+      }
+      default:
+        return false;
+    }
+    bool uIso = true, vIso = true;
+    for (const gp_Pnt2d& p : poles) {
+      uIso = uIso && std::abs(p.X() - poles.front().X()) <= uTol;
+      vIso = vIso && std::abs(p.Y() - poles.front().Y()) <= vTol;
+    }
+    if (!uIso && !vIso) return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRad)
     : surface_(face, Standard_False), elementary_(surface_), face_(face) {
@@ -96,10 +148,12 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
       // refinement takes them for slivers, and a sliver split on its long edge makes more.
       if (kuMax > 0) hu = std::min(hu, std::sqrt(2 * hv / kuMax));
       if (kvMax > 0) hv = std::min(hv, std::sqrt(2 * hu / kvMax));
-      // 1000:1 at most on an analytic surface, which bends the same way all along it; 30:1 on a
-      // developable free-form face, whose boundary pcurves may curve across the long direction (at
-      // 100:1 the Delaunay triangulation joins three points of such a curve: a flipped triangle).
-      most = directional ? 1e-3 : 1.0 / 30;
+      // 1000:1 at most on an analytic surface, which bends the same way all along it, and on a
+      // developable free-form face bounded by iso-lines (a wing's skin between its ribs); 30:1 on
+      // other developable free-form faces, whose boundary pcurves may curve across the long
+      // direction (at 100:1 the Delaunay triangulation joins three points of such a curve: a
+      // flipped triangle).
+      most = directional || boundedByIsoLines(face, uMax - uMin, vMax - vMin) ? 1e-3 : 1.0 / 30;
     } else {
       const double kmin = 1e-300;
       hu = 1 / std::sqrt(std::max(ku, kmin)), hv = 1 / std::sqrt(std::max(kv, kmin));
