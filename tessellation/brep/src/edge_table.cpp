@@ -44,6 +44,14 @@ double angleBetween(const gp_Vec& a, const gp_Vec& b) {
 
 constexpr int kMaxDepth = 24;  // 2^24 segments per coarse segment: beyond any sane tolerance
 
+// Height over length of the triangle that must stand on each segment within the tolerances: a
+// right isosceles one (half its base high, angles 45-90-45), not an equilateral one (0.866). Where
+// a face bends across an edge the refinement puts its first row of points closer to the boundary
+// than the segments are long, with well-shaped triangles still; asking room for equilateral ones
+// split such edges up to 4 times finer than the face needed (Propeller 12136 -> 7968 triangles,
+// 2.5% fewer over the bench's models; 0.35 and 0.65 both did worse).
+constexpr double kStandingHeight = 0.5;
+
 // A line, or a B-spline or Bezier curve whose poles all lie on the chord between the edge's ends
 // (the curve stays within their hull): a natural-bounds B-spline face's straight sides, which
 // OpenCASCADE writes as degree-1 B-splines.
@@ -347,7 +355,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         if (!info.faces[k].scale.bendsBeside) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
-          if (standing(k, ta, tb, pa, pb, 0.866, side) > 1.0) return true;
+          if (standing(k, ta, tb, pa, pb, kStandingHeight, side) > 1.0) return true;
         }
       }
       return false;
