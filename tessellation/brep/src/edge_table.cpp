@@ -52,6 +52,49 @@ constexpr int kMaxDepth = 24;  // 2^24 segments per coarse segment: beyond any s
 // 2.5% fewer over the bench's models; 0.35 and 0.65 both did worse).
 constexpr double kStandingHeight = 0.5;
 
+// The fewest equal segments of a circular arc (radius r, angle theta) that meet a level's criteria
+// in discretiseEdge(): the sagitta within the chordal tolerance and the tangent turn within the
+// angle, which is not asked of chords shorter than the angle criteria's minimum size.
+std::uint32_t fewestArcSegments(double r, double theta, const Level& tol) {
+  constexpr double kBelow = 1 - 1e-9;  // rounding must not leave a segment a hair over
+  const double bySag = 2 * std::acos(std::clamp(1 - tol.chordal / r, -1.0, 1.0)) * kBelow;
+  double n = std::ceil(theta / std::max(bySag, 1e-9));
+  const double byAngle = tol.angleRad * kBelow;
+  // More segments than this have chords shorter than the minimum size (0.1 of the chordal).
+  const double minChord = 2 * std::asin(std::min(1.0, 0.1 * tol.chordal / (2 * r)));
+  const double shortest = minChord > 0 ? std::floor(theta / minChord) : HUGE_VAL;
+  n = std::max(n, std::min(std::ceil(theta / byAngle), shortest));
+  return static_cast<std::uint32_t>(std::min(n, 1e7));
+}
+
+// m 2^j with m at most 7: the counts level-by-level halving reaches from a small first count.
+bool halvingCount(std::uint32_t n) {
+  while (n % 2 == 0) n /= 2;
+  return n <= 7;
+}
+
+// Equal segments of a circular arc per level: the last level has at most about 14% more segments
+// than it needs (the next count of the form m 2^j, m <= 7), and each coarser level has half of the
+// next one's where that is still enough for it, else as many, so each level's points are among
+// the next one's. Halving the segments level by level from two or three instead ends anywhere
+// between the fewest and twice as many (a circle that needs 77 got 96). Empty when the arc would
+// need absurdly many.
+std::vector<std::uint32_t> arcSegments(double r, double theta, bool closed, const std::vector<Level>& tolerances) {
+  if (!(r > 0) || !(theta > 0) || tolerances.empty()) return {};
+  const std::uint32_t least = closed ? 3 : 2;  // a closed edge must be a polygon
+  std::vector<std::uint32_t> out(tolerances.size());
+  std::uint32_t n = std::max(least, fewestArcSegments(r, theta, tolerances.back()));
+  if (n > 1000000) return {};
+  while (!halvingCount(n)) ++n;
+  out.back() = n;
+  for (std::size_t k = tolerances.size() - 1; k-- > 0;) {
+    const std::uint32_t need = std::max(least, fewestArcSegments(r, theta, tolerances[k]));
+    const std::uint32_t next = out[k + 1];
+    out[k] = next % 2 == 0 && next / 2 >= need ? next / 2 : next;
+  }
+  return out;
+}
+
 // A line, or a B-spline or Bezier curve whose poles all lie on the chord between the edge's ends
 // (the curve stays within their hull): a natural-bounds B-spline face's straight sides, which
 // OpenCASCADE writes as degree-1 B-splines.
@@ -89,7 +132,9 @@ bool isStraight(const BRepAdaptor_Curve& curve, double first, double last) {
 
 }  // namespace
 
-EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(model) {
+EdgeTable::EdgeTable(const ModelImpl& model, std::vector<Level> tolerances)
+    : model_(model), tolerances_(std::move(tolerances)) {
+  const std::size_t levelCount = tolerances_.size();
   const std::size_t n = model.edgeShapes.size();
   info_.resize(n);
   levels_.resize(n);
@@ -132,6 +177,8 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::size_t levelCount) : model_(mo
     try {
       BRepAdaptor_Curve curve(edge);
       info.straight = isStraight(curve, info.first, info.last);
+      if (curve.GetType() == GeomAbs_Circle && onPlanesAndCylinders(info.faces))
+        info.arcSegments = arcSegments(curve.Circle().Radius(), info.last - info.first, info.closed, tolerances_);
       if (v0.IsNull()) info.p0 = curve.Value(info.first);
       if (v1.IsNull()) info.p1 = curve.Value(info.last);
     } catch (const Standard_Failure&) {
@@ -153,7 +200,8 @@ void EdgeTable::scalesSet() {
     for (std::uint32_t k = 0; k < info_[e].faces.size(); ++k) faceUses_[info_[e].faces[k].id].push_back({e, k});
 }
 
-bool EdgeTable::discretise(int level, const Level& tolerance, unsigned threads, const std::atomic<bool>* cancel) {
+bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>* cancel) {
+  const Level& tolerance = tolerances_[static_cast<std::size_t>(level)];
   std::atomic<bool> cancelled{false};
   parallelFor(info_.size(), threads, [&](std::size_t e, unsigned) {
     if (cancelled.load(std::memory_order_relaxed)) return;
@@ -166,6 +214,37 @@ bool EdgeTable::discretise(int level, const Level& tolerance, unsigned threads, 
   if (cancelled) return false;
   separateCrossings(level, threads);
   return true;
+}
+
+// The points of `previous` (increasing, from first to last; may be empty) and those dividing
+// [first, last] into n equal segments, in increasing order; an equal-segment point within a
+// quarter segment of a previous one is left out (the previous ones must stay: nested levels).
+std::vector<double> EdgeTable::withEqualSegments(const std::vector<double>& previous, double first, double last,
+                                                 std::uint32_t n) {
+  std::vector<double> out;
+  out.reserve(previous.size() + n + 1);
+  const double step = (last - first) / n;
+  std::size_t j = 0;
+  for (std::uint32_t i = 0; i <= n; ++i) {
+    const double t = i == n ? last : first + step * i;
+    while (j < previous.size() && previous[j] < t - 0.25 * step) out.push_back(previous[j++]);
+    if (j < previous.size() && previous[j] <= t + 0.25 * step) continue;  // the previous point stands in
+    out.push_back(t);
+  }
+  while (j < previous.size()) out.push_back(previous[j++]);
+  return out;
+}
+
+// Only planes and cylinders use the edge (a hole in a plate, a shaft's end). Next to the apex of a
+// cone, beside a torus's tube and on free-form faces, the face meshers' coarse boundary handling
+// (pole copies placed for the first level, triangles standing on long chords) is tuned to the
+// halving's counts: other counts left flipped triangles there.
+bool EdgeTable::onPlanesAndCylinders(const std::vector<FaceUse>& uses) {
+  for (const FaceUse& use : uses) {
+    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(use.face, Standard_False).GetType();
+    if (type != GeomAbs_Plane && type != GeomAbs_Cylinder) return false;
+  }
+  return !uses.empty();
 }
 
 double EdgeTable::pcurveParameter(const Info& info, const FaceUse& use, double t) {
@@ -270,12 +349,13 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
   std::vector<double> seedT;
   if (level > 0) {
     seedT = levels_[e][static_cast<std::size_t>(level - 1)].t;
-  } else {
+  } else if (info.arcSegments.empty()) {
     // Coarsest: one segment for a line, two for a curve, three for a closed edge (a loop of its
     // own must be a polygon).
     const int segments = info.closed ? 3 : (info.straight ? 1 : 2);
     for (int i = 0; i <= segments; ++i) seedT.push_back(info.first + (info.last - info.first) * i / segments);
   }
+  if (!info.arcSegments.empty()) seedT = withEqualSegments(seedT, info.first, info.last, info.arcSegments[static_cast<std::size_t>(level)]);
   try {
     BRepAdaptor_Curve curve(edge);
     const double minSize = 0.1 * tol.chordal;  // below it the angle criteria are not applied (as BRepMesh's MinSize)

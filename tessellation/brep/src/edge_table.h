@@ -28,8 +28,9 @@ struct EdgePoints {
 
 class EdgeTable {
  public:
-  // Gathers the edges and the faces using them; cheap (no surface is evaluated).
-  EdgeTable(const ModelImpl& model, std::size_t levelCount);
+  // Gathers the edges and the faces using them; cheap (no surface is evaluated). `tolerances`: the
+  // edges' tolerance at each level, coarsest first.
+  EdgeTable(const ModelImpl& model, std::vector<Level> tolerances);
 
   // What the discretisation needs of a face's surface (SurfaceEval's scaling and parameter box).
   struct FaceScale {
@@ -47,7 +48,7 @@ class EdgeTable {
   void scalesSet();
 
   // Discretises every non-degenerate edge for level k (after level k-1). Returns false if cancelled.
-  bool discretise(int level, const Level& tolerance, unsigned threads, const std::atomic<bool>* cancel);
+  bool discretise(int level, unsigned threads, const std::atomic<bool>* cancel);
 
   bool degenerated(EdgeId e) const { return info_[e].degenerated; }
   // The points of edge e at level k (discretise(k) has returned). Degenerate edges have none.
@@ -79,9 +80,15 @@ class EdgeTable {
     bool closed = false;    // both ends are the same vertex
     bool broken = false;    // no usable curve: the chord between its vertices stands in for it
     std::vector<FaceUse> faces;  // at most two
+    // A circular arc: its equal segments per level (arcSegments()), each level's a divisor of the
+    // next one's; empty for other curves.
+    std::vector<std::uint32_t> arcSegments;
   };
   void discretiseEdge(EdgeId e, int level, const Level& tolerance);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
+  static bool onPlanesAndCylinders(const std::vector<FaceUse>& uses);
+  static std::vector<double> withEqualSegments(const std::vector<double>& previous, double first, double last,
+                                               std::uint32_t n);
 
   // Segment j of edge e (between its points j and j + 1) at the level at hand.
   struct SegmentId {
@@ -94,6 +101,7 @@ class EdgeTable {
   void findCrossings(FaceId face, int level, std::vector<SegmentId>& out) const;
 
   const ModelImpl& model_;
+  std::vector<Level> tolerances_;  // [level]
   std::vector<Info> info_;
   std::vector<std::vector<EdgePoints>> levels_;  // [edge][level], sized up front (no reallocation)
   std::vector<FaceScale> faceScales_;             // [face]

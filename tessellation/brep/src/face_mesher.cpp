@@ -865,8 +865,8 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         continue;
       }
       if (kDebugRefine) {
-        std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
-                     pass, t, r->deviation, r->normalCos, r->longest, r->flags, u, v);
+        std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, facet %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
+                     pass, t, r->deviation, r->normalCos, r->facetCos, r->longest, r->flags, u, v);
       }
       // A point the predicates cannot handle is no split: refinement towards a corner (a pole, a
       // sliver) must not end in underflowing coordinates.

@@ -53,8 +53,14 @@ std::vector<Level> planLevels(double chordal, double angle, double diagonal, boo
   return levels;
 }
 
+// The edges' tolerances: below each level's by the same margin as the faces' triangles.
+static std::vector<Level> edgeTolerances(std::vector<Level> schedule) {
+  for (Level& level : schedule) level.chordal *= kDeviationMargin;
+  return schedule;
+}
+
 TessellatorImpl::TessellatorImpl(const Model& m, double c, double a, std::vector<Level> s)
-    : model(m), chordal(c), angle(a), schedule(std::move(s)), edges(m.impl(), schedule.size()), faces(m.faces().size()) {}
+    : model(m), chordal(c), angle(a), schedule(std::move(s)), edges(m.impl(), edgeTolerances(schedule)), faces(m.faces().size()) {}
 
 Tessellator::Tessellator(std::unique_ptr<TessellatorImpl> impl) : impl_(std::move(impl)) {}
 Tessellator::~Tessellator() = default;
@@ -88,9 +94,7 @@ bool Tessellator::discretiseEdges(int level, unsigned threads, const std::atomic
   if (level != impl_->edgeLevel.load() + 1 || level > lastLevel()) return level <= impl_->edgeLevel.load();
   // Edges aim below the level's tolerance by the same margin as the faces' triangles.
   if (!impl_->surfacesReady && !impl_->prepareSurfaces(threads, cancel)) return false;
-  Level edgeTolerance = impl_->schedule[static_cast<std::size_t>(level)];
-  edgeTolerance.chordal *= kDeviationMargin;
-  if (!impl_->edges.discretise(level, edgeTolerance, threads, cancel)) return false;
+  if (!impl_->edges.discretise(level, threads, cancel)) return false;
   impl_->edgeLevel.store(level);
   return true;
 }
