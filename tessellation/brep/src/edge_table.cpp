@@ -21,6 +21,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
+#include "curve_poles.h"
 #include "facet_rules.h"
 #include "model_impl.h"
 #include "parallel.h"
@@ -99,23 +100,9 @@ std::vector<std::uint32_t> arcSegments(double r, double theta, bool closed, cons
 // (the curve stays within their hull): a natural-bounds B-spline face's straight sides, which
 // OpenCASCADE writes as degree-1 B-splines.
 bool isStraight(const BRepAdaptor_Curve& curve, double first, double last) {
+  if (curve.GetType() == GeomAbs_Line) return true;
   std::vector<gp_Pnt> poles;
-  switch (curve.GetType()) {
-    case GeomAbs_Line:
-      return true;
-    case GeomAbs_BSplineCurve: {
-      Handle(Geom_BSplineCurve) bspline = curve.BSpline();
-      for (int i = 1; i <= bspline->NbPoles(); ++i) poles.push_back(bspline->Pole(i));
-      break;
-    }
-    case GeomAbs_BezierCurve: {
-      Handle(Geom_BezierCurve) bezier = curve.Bezier();
-      for (int i = 1; i <= bezier->NbPoles(); ++i) poles.push_back(bezier->Pole(i));
-      break;
-    }
-    default:
-      return false;
-  }
+  if (!hullPoints(curve, first, last, poles)) return false;
   const gp_Pnt a = curve.Value(first), b = curve.Value(last);
   const gp_Vec chord(a, b);
   const double length = chord.Magnitude();

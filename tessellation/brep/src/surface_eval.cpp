@@ -16,6 +16,8 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
+#include "curve_poles.h"
+
 namespace cetview::brep {
 
 namespace {
@@ -34,25 +36,7 @@ bool boundedByIsoLines(const TopoDS_Face& face, double uRange, double vRange) {
     if (pcurve.IsNull()) return false;
     Geom2dAdaptor_Curve curve(pcurve, first, last);
     std::vector<gp_Pnt2d> poles;
-    switch (curve.GetType()) {
-      case GeomAbs_Line: {
-        const gp_Pnt2d a = curve.Value(first), b = curve.Value(last);
-        poles = {a, b};
-        break;
-      }
-      case GeomAbs_BSplineCurve: {
-        Handle(Geom2d_BSplineCurve) bspline = curve.BSpline();
-        for (int i = 1; i <= bspline->NbPoles(); ++i) poles.push_back(bspline->Pole(i));
-        break;
-      }
-      case GeomAbs_BezierCurve: {
-        Handle(Geom2d_BezierCurve) bezier = curve.Bezier();
-        for (int i = 1; i <= bezier->NbPoles(); ++i) poles.push_back(bezier->Pole(i));
-        break;
-      }
-      default:
-        return false;
-    }
+    if (!hullPoints(curve, first, last, poles)) return false;
     bool uIso = true, vIso = true;
     for (const gp_Pnt2d& p : poles) {
       uIso = uIso && std::abs(p.X() - poles.front().X()) <= uTol;
