@@ -41,6 +41,17 @@
 namespace cetview::brep {
 namespace {
 
+// A cubic B-spline through `points` (with end tangents if given); null if OpenCASCADE fails.
+Handle(Geom_BSplineCurve) interpolate(const std::vector<gp_Pnt>& points, const gp_Vec* startTangent = nullptr,
+                                      const gp_Vec* endTangent = nullptr) {
+  Handle(TColgp_HArray1OfPnt) array = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) array->SetValue(static_cast<int>(i) + 1, points[i]);
+  GeomAPI_Interpolate interp(array, Standard_False, 1e-7);
+  if (startTangent && endTangent) interp.Load(*startTangent, *endTangent);
+  interp.Perform();
+  return interp.IsDone() ? interp.Curve() : Handle(Geom_BSplineCurve)();
+}
+
 void checkAtSeveralDeflections(const TopoDS_Shape& shape, const std::string& name) {
   auto model = test::loadShape(shape, name);
   ASSERT_TRUE(model);
@@ -232,18 +243,12 @@ TEST(HardCases, TinyEdges) {
 
 TEST(HardCases, RevolutionTouchingItsAxis) {
   // An egg: a B-spline profile from the axis to the axis, revolved: a pole at each end.
-  Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, 5);
-  pts->SetValue(1, gp_Pnt(0, 0, 0));
-  pts->SetValue(2, gp_Pnt(4, 0, 2));
-  pts->SetValue(3, gp_Pnt(5, 0, 6));
-  pts->SetValue(4, gp_Pnt(3, 0, 11));
-  pts->SetValue(5, gp_Pnt(0, 0, 13));
-  GeomAPI_Interpolate interp(pts, Standard_False, 1e-7);
-  interp.Load(gp_Vec(1, 0, 0), gp_Vec(-1, 0, 0));
-  interp.Perform();
-  ASSERT_TRUE(interp.IsDone());
+  const gp_Vec out(1, 0, 0), in(-1, 0, 0);
+  const Handle(Geom_BSplineCurve) curve =
+      interpolate({gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 2), gp_Pnt(5, 0, 6), gp_Pnt(3, 0, 11), gp_Pnt(0, 0, 13)}, &out, &in);
+  ASSERT_FALSE(curve.IsNull());
   BRepBuilderAPI_MakeWire wire;
-  wire.Add(BRepBuilderAPI_MakeEdge(interp.Curve()).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(curve).Edge());
   wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 13), gp_Pnt(0, 0, 0)).Edge());
   const TopoDS_Face profile = BRepBuilderAPI_MakeFace(wire.Wire(), Standard_True).Face();
   checkAtSeveralDeflections(BRepPrimAPI_MakeRevol(profile, gp_Ax1(gp_Pnt(0, 0, 0), gp::DZ()), 2 * M_PI).Shape(), "egg");
@@ -301,19 +306,11 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
 // extruded 5 along z as a degree-1 B-spline surface, bounded by its iso-lines. Its triangles run
 // from rib to rib: every vertex lies on one of the two ribs. With the stretch capped at 30:1, as on
 // developable faces with curved outlines, it had rows of points in between (dealii's wing: 386
-// triangles where BRepMesh makes 132; now 82).
+// triangles where BRepMesh makes 132; now 76).
 TEST(HardCases, BSplineSkinBetweenRibsIsOneStrip) {
-  Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, 6);
-  pts->SetValue(1, gp_Pnt(1, 0, 0));
-  pts->SetValue(2, gp_Pnt(0.6, 0.07, 0));
-  pts->SetValue(3, gp_Pnt(0.3, 0.09, 0));
-  pts->SetValue(4, gp_Pnt(0.1, 0.06, 0));
-  pts->SetValue(5, gp_Pnt(0.02, 0.025, 0));
-  pts->SetValue(6, gp_Pnt(0, 0, 0));
-  GeomAPI_Interpolate interp(pts, Standard_False, 1e-7);
-  interp.Perform();
-  ASSERT_TRUE(interp.IsDone());
-  const Handle(Geom_BSplineCurve) profile = interp.Curve();
+  const Handle(Geom_BSplineCurve) profile = interpolate(
+      {gp_Pnt(1, 0, 0), gp_Pnt(0.6, 0.07, 0), gp_Pnt(0.3, 0.09, 0), gp_Pnt(0.1, 0.06, 0), gp_Pnt(0.02, 0.025, 0), gp_Pnt(0, 0, 0)});
+  ASSERT_FALSE(profile.IsNull());
   const int n = profile->NbPoles();
   TColgp_Array2OfPnt poles(1, n, 1, 2);
   for (int i = 1; i <= n; ++i) {

@@ -1,6 +1,8 @@
 // The control points of a curve whose hull bounds it: a line's ends, a B-spline's or a Bezier
 // curve's poles. For BRepAdaptor_Curve (3D, gp_Pnt) and Geom2dAdaptor_Curve (UV, gp_Pnt2d) alike;
-// tests of straightness and of iso-lines look at them instead of sampling the curve.
+// tests of straightness and of iso-lines look at them instead of sampling the curve. Callers
+// include the curve classes their adaptor hands out (Geom_BSplineCurve.hxx and Geom_BezierCurve.hxx,
+// or their Geom2d_ counterparts): the template needs them complete.
 #pragma once
 
 #include <vector>

@@ -96,6 +96,24 @@ std::vector<std::uint32_t> arcSegments(double r, double theta, bool closed, cons
   return out;
 }
 
+// The points of `previous` (increasing, from first to last; may be empty) and those dividing
+// [first, last] into n equal segments, in increasing order; an equal-segment point within a
+// quarter segment of a previous one is left out (the previous ones must stay: nested levels).
+std::vector<double> withEqualSegments(const std::vector<double>& previous, double first, double last, std::uint32_t n) {
+  std::vector<double> out;
+  out.reserve(previous.size() + n + 1);
+  const double step = (last - first) / n;
+  std::size_t j = 0;
+  for (std::uint32_t i = 0; i <= n; ++i) {
+    const double t = i == n ? last : first + step * i;
+    while (j < previous.size() && previous[j] < t - 0.25 * step) out.push_back(previous[j++]);
+    if (j < previous.size() && previous[j] <= t + 0.25 * step) continue;  // the previous point stands in
+    out.push_back(t);
+  }
+  while (j < previous.size()) out.push_back(previous[j++]);
+  return out;
+}
+
 // A line, or a B-spline or Bezier curve whose poles all lie on the chord between the edge's ends
 // (the curve stays within their hull): a natural-bounds B-spline face's straight sides, which
 // OpenCASCADE writes as degree-1 B-splines.
@@ -201,25 +219,6 @@ bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>*
   if (cancelled) return false;
   separateCrossings(level, threads);
   return true;
-}
-
-// The points of `previous` (increasing, from first to last; may be empty) and those dividing
-// [first, last] into n equal segments, in increasing order; an equal-segment point within a
-// quarter segment of a previous one is left out (the previous ones must stay: nested levels).
-std::vector<double> EdgeTable::withEqualSegments(const std::vector<double>& previous, double first, double last,
-                                                 std::uint32_t n) {
-  std::vector<double> out;
-  out.reserve(previous.size() + n + 1);
-  const double step = (last - first) / n;
-  std::size_t j = 0;
-  for (std::uint32_t i = 0; i <= n; ++i) {
-    const double t = i == n ? last : first + step * i;
-    while (j < previous.size() && previous[j] < t - 0.25 * step) out.push_back(previous[j++]);
-    if (j < previous.size() && previous[j] <= t + 0.25 * step) continue;  // the previous point stands in
-    out.push_back(t);
-  }
-  while (j < previous.size()) out.push_back(previous[j++]);
-  return out;
 }
 
 // Only planes and cylinders use the edge (a hole in a plate, a shaft's end). Next to the apex of a

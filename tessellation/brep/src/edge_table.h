@@ -87,8 +87,6 @@ class EdgeTable {
   void discretiseEdge(EdgeId e, int level, const Level& tolerance);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
   static bool onPlanesAndCylinders(const std::vector<FaceUse>& uses);
-  static std::vector<double> withEqualSegments(const std::vector<double>& previous, double first, double last,
-                                               std::uint32_t n);
 
   // Segment j of edge e (between its points j and j + 1) at the level at hand.
   struct SegmentId {

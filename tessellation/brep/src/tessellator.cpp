@@ -92,7 +92,7 @@ FaceReport Tessellator::report(FaceId face) const { return impl_->faces[face].re
 
 bool Tessellator::discretiseEdges(int level, unsigned threads, const std::atomic<bool>* cancel) {
   if (level != impl_->edgeLevel.load() + 1 || level > lastLevel()) return level <= impl_->edgeLevel.load();
-  // Edges aim below the level's tolerance by the same margin as the faces' triangles.
+  // The edge table holds each level's edge tolerance (edgeTolerances(): the faces' margin applied).
   if (!impl_->surfacesReady && !impl_->prepareSurfaces(threads, cancel)) return false;
   if (!impl_->edges.discretise(level, threads, cancel)) return false;
   impl_->edgeLevel.store(level);
