@@ -389,5 +389,68 @@ TEST(HardCases, CirclesTakeNearlyTheFewestEqualSegments) {
   EXPECT_EQ(circles, 2);
 }
 
+// A cone's apex row (its degenerate edge in UV) is split with every level like the base circle,
+// so the triangles fanning into the apex keep corners on the row close in u to the points they
+// join: at level 0's count the fan's triangles reach ever further round the row as the circle's
+// segments halve.
+TEST(HardCases, ApexRowKeepsPaceWithTheBaseCircle) {
+  const gp_Pnt apex(0, 0, 10);
+  auto model = test::loadShape(BRepPrimAPI_MakeCone(5, 0, 10).Shape(), "cone");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.0005));
+  ASSERT_TRUE(t);
+  ASSERT_GE(t->lastLevel(), 4);
+  int cones = 0;
+  for (FaceId f = 0; f < model->faces().size(); ++f) {
+    if (model->faces()[f].kind != SurfaceKind::kCone) continue;
+    ++cones;
+    const FaceMesh& m = t->faceMesh(f);
+    for (int k = 0; k <= t->lastLevel(); ++k) {
+      SCOPED_TRACE("level " + std::to_string(k));
+      std::vector<std::uint32_t> onApex, onBase;
+      for (const std::uint32_t v : m.levels[static_cast<std::size_t>(k)]) {
+        const gp_Pnt p(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+        if (p.Distance(apex) < 1e-9) onApex.push_back(v);
+        if (std::abs(p.Z()) < 1e-9) onBase.push_back(v);
+      }
+      for (auto* list : {&onApex, &onBase}) {
+        std::sort(list->begin(), list->end());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+      }
+      // The apex row's points in use (one per fan triangle's corner there) against the circle's.
+      EXPECT_GE(2 * onApex.size(), onBase.size()) << onApex.size() << " apex corners, " << onBase.size() << " on the circle";
+    }
+  }
+  EXPECT_EQ(cones, 1);
+}
+
+// A B-spline patch pinched into a corner: its v = 0 row of poles lies within a micron of one
+// point, as CAD exports write three-sided patches, so the edge there is degenerate but the row's
+// first derivative along u is not quite zero. The normal that derivative gives swings with u;
+// counted as a real normal, it sent the refinement down towards the row for the angle and left
+// flipped slivers by it (occ/shell1.brep, trj4's pinched faces).
+TEST(HardCases, PinchedBSplinePatch) {
+  const int n = 4;
+  TColgp_Array2OfPnt poles(1, n, 1, n);
+  const double noise[n] = {0.0, 7e-7, -4e-7, 9e-7};
+  for (int i = 1; i <= n; ++i) {
+    const double theta = (M_PI / 3) * (i - 1) / (n - 1);
+    poles.SetValue(i, 1, gp_Pnt(noise[i - 1], -noise[n - i], 0.5 * noise[(i + 1) % n]));
+    for (int j = 2; j <= n; ++j) {
+      const double r = 10.0 * (j - 1) / (n - 1);
+      poles.SetValue(i, j, gp_Pnt(r * std::cos(theta), r * std::sin(theta), 0.4 * r * std::sin(2.0 * theta + j) + 0.05 * r * r));
+    }
+  }
+  TColStd_Array1OfReal knots(1, 2);
+  TColStd_Array1OfInteger mults(1, 2);
+  knots(1) = 0, knots(2) = 1, mults(1) = mults(2) = n;
+  Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, knots, knots, mults, mults, n - 1, n - 1);
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-5).Face();
+  int degenerate = 0;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) degenerate += BRep_Tool::Degenerated(TopoDS::Edge(e.Current()));
+  ASSERT_EQ(degenerate, 1);
+  checkAtSeveralDeflections(face, "pinched");
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -36,7 +36,6 @@ namespace {
 constexpr int kMaxPasses = 400;
 // Triangles per chunk when a pass's measuring is shared out (a triangle takes a few microseconds).
 constexpr std::size_t kMeasureGrain = 64;
-const bool kDebugRefine = std::getenv("CETVIEW_DEBUG_REFINE") != nullptr;  // traces split decisions
 
 double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::VertexId>& loop) {
   double a = 0;
@@ -53,6 +52,14 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && cet::supportedCoordinate(p.y); }
 
 }  // namespace
+
+bool traceFace(FaceId face) {
+  static const char* const which = std::getenv("CETVIEW_DEBUG_REFINE");
+  if (!which) return false;
+  char* end = nullptr;
+  const unsigned long n = std::strtoul(which, &end, 10);
+  return end == which || *end != '\0' || n == face;
+}
 
 FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings, std::unique_ptr<SurfaceEval> eval)
     : topology_(std::move(topology)),
@@ -86,11 +93,13 @@ void FaceMesher::appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* 
 // Where an edge's pcurve and its 3D curve disagree (an edge of large tolerance, common in IGES),
 // the pcurve's (u, v) maps to a surface point away from the shared 3D edge point, and the
 // triangles between such boundary points and interior points (which sit at their own (u, v)) fold
-// over the gap. The (u, v) of the edge point's foot on the surface keeps the two consistent.
+// over the gap. The (u, v) of the edge point's foot on the surface keeps the two consistent. From
+// gaps of 1% of the tolerance: a thin triangle flips over less (a 4.5% gap left one flipped on a
+// cylinder of occt/trj4).
 gp_Pnt2d FaceMesher::boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) const {
   gp_Pnt2d uv = le.pcurve->Value(le.pcurveParameter(t)).Translated(le.shift);
   const double gap = eval_.point(uv.X(), uv.Y()).Distance(p);
-  if (!(gap > 0.05 * settings_.finalChordal)) return uv;
+  if (!(gap > 0.01 * settings_.finalChordal)) return uv;
   double u = uv.X(), v = uv.Y();
   const double foot = eval_.project(p, u, v, 8);
   // Only a foot clearly closer than the pcurve's point, and within half the face's parameter box of
@@ -139,8 +148,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       }
     }
     // Degenerate edges (poles, apexes) belong to this face alone: split them so their segments are
-    // about as long in scaled UV as the loop's others, which keeps the triangles fanning into the
-    // pole well shaped in UV.
+    // about as long in scaled UV as the loop's others (poleSegments).
     const double typical = segmentCount ? lengthSum / static_cast<double>(segmentCount) : 0.0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const LoopEdge& le = loop[i];
@@ -149,7 +157,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       const gp_Pnt2d b = le.pcurve->Value(le.pcurveLast).Translated(le.shift);
       const cet::Point2 sa = scaled(a.X(), a.Y()), sb = scaled(b.X(), b.Y());
       const double len = std::hypot(sb.x - sa.x, sb.y - sa.y);
-      const int n = typical > 0 ? std::clamp(static_cast<int>(std::lround(len / typical)), 1, 256) : 4;
+      const int n = poleSegments(len, typical);
       OccPoints& op = occPoints[l][i];
       for (int j = 0; j <= n; ++j) {
         const double t = le.pcurveFirst + (le.pcurveLast - le.pcurveFirst) * j / n;
@@ -279,12 +287,11 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
 
 // ---------------------------------------------------------------------------------------------
 // Later levels: every boundary segment that its edge split at level k becomes the chain through the
-// new points. Degenerate edges keep their level-0 points (they are one 3D point).
+// new points; degenerate edges (one 3D point) are split evenly in UV to keep pace with their loop.
 bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem) {
-  std::vector<cet::Point2> pts;
   std::vector<gp_Pnt2d> uvs;
   std::vector<const gp_Pnt*> ps;
-  std::vector<cet::VertexId> ids;
+  std::vector<cet::VertexId> chain;
   for (Occurrence& occ : occurrences_) {
     const LoopEdge& le = topology_.loops[occ.loop][occ.index];
     if (le.degenerated) continue;
@@ -295,60 +302,127 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
       problem = "internal: boundary chain out of step with its edge";
       return false;
     }
-    std::vector<cet::VertexId> chain;
+    chain.clear();
     chain.reserve(now.t.size());
     std::size_t j = 0;
     for (std::size_t o = 0; o + 1 < before.t.size(); ++o) {
       chain.push_back(occ.chain[o]);
       while (j < now.t.size() && now.t[j] <= before.t[o]) ++j;
-      pts.clear(), uvs.clear(), ps.clear();
+      uvs.clear(), ps.clear();
       for (; j < now.t.size() && now.t[j] < before.t[o + 1]; ++j) {
         uvs.push_back(boundaryUV(le, now.t[j], now.p[j]));
-        pts.push_back(scaled(uvs.back().X(), uvs.back().Y()));
         ps.push_back(&now.p[j]);
       }
-      if (pts.empty()) continue;
-      if (!std::all_of(pts.begin(), pts.end(), supported)) {
-        problem = "refined boundary parameters outside the triangulator's range";
-        return false;
-      }
-      if (!occ.forward) {
-        std::reverse(pts.begin(), pts.end());
-        std::reverse(uvs.begin(), uvs.end());
-        std::reverse(ps.begin(), ps.end());
-      }
-      ids.assign(pts.size(), cet::kNoVertex);
-      const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
-      const cet::VertexId a = occ.forward ? occ.chain[o] : occ.chain[o + 1];
-      const cet::VertexId b = occ.forward ? occ.chain[o + 1] : occ.chain[o];
-      const cet::Status s = cdt_->replaceConstraint(a, b, pts.data(), pts.size(), ids.data());
-      // New triangulator vertices get their output data in id order (the order of the points).
-      cet::VertexId next = countBefore;
-      for (std::size_t i = 0; i < ids.size(); ++i) {
-        if (ids[i] == next) {
-          appendVertex(mesh, uvs[i].X(), uvs[i].Y(), ps[i]);
-          ++next;
-        }
-      }
-      while (next < cdt_->vertexCount()) {  // defensive: any vertex not matched above
-        const cet::Point2 q = cdt_->point(next);
-        double u = 0, v = 0;
-        eval_.unscaled(q, u, v);
-        appendVertex(mesh, u, v, nullptr);
-        ++next;
-      }
-      if (!s.ok()) {
-        problem = "refined boundary crosses itself in UV (" + s.message + ")";
-        return false;
-      }
-      if (!occ.forward) std::reverse(ids.begin(), ids.end());
-      chain.insert(chain.end(), ids.begin(), ids.end());
+      if (!splitSegment(occ, o, uvs, ps, chain, mesh, problem)) return false;
     }
     chain.push_back(occ.chain.back());
-    occ.chain = std::move(chain);
+    occ.chain.swap(chain);
   }
+  if (!refinePoles(mesh, problem)) return false;
   cdt_->markDomain(cet::DomainRule::kLoopOrientation);
   boundaryLevel_ = k;
+  return true;
+}
+
+// Replaces the boundary segment from occ.chain[o] to occ.chain[o + 1] by the chain through the
+// points (uvs, with 3D points ps, in increasing parameter), appending their ids to chain.
+bool FaceMesher::splitSegment(const Occurrence& occ, std::size_t o, std::vector<gp_Pnt2d>& uvs,
+                              std::vector<const gp_Pnt*>& ps, std::vector<cet::VertexId>& chain, FaceMesh& mesh,
+                              std::string& problem) {
+  if (uvs.empty()) return true;
+  segmentPoints_.clear();
+  for (const gp_Pnt2d& uv : uvs) segmentPoints_.push_back(scaled(uv.X(), uv.Y()));
+  if (!std::all_of(segmentPoints_.begin(), segmentPoints_.end(), supported)) {
+    problem = "refined boundary parameters outside the triangulator's range";
+    return false;
+  }
+  if (!occ.forward) {
+    std::reverse(segmentPoints_.begin(), segmentPoints_.end());
+    std::reverse(uvs.begin(), uvs.end());
+    std::reverse(ps.begin(), ps.end());
+  }
+  ids_.assign(segmentPoints_.size(), cet::kNoVertex);
+  const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
+  const cet::VertexId a = occ.forward ? occ.chain[o] : occ.chain[o + 1];
+  const cet::VertexId b = occ.forward ? occ.chain[o + 1] : occ.chain[o];
+  const cet::Status s = cdt_->replaceConstraint(a, b, segmentPoints_.data(), segmentPoints_.size(), ids_.data());
+  // New triangulator vertices get their output data in id order (the order of the points).
+  cet::VertexId next = countBefore;
+  for (std::size_t i = 0; i < ids_.size(); ++i) {
+    if (ids_[i] == next) {
+      appendVertex(mesh, uvs[i].X(), uvs[i].Y(), ps[i]);
+      ++next;
+    }
+  }
+  while (next < cdt_->vertexCount()) {  // defensive: any vertex not matched above
+    const cet::Point2 q = cdt_->point(next);
+    double u = 0, v = 0;
+    eval_.unscaled(q, u, v);
+    appendVertex(mesh, u, v, nullptr);
+    ++next;
+  }
+  if (!s.ok()) {
+    problem = "refined boundary crosses itself in UV (" + s.message + ")";
+    return false;
+  }
+  if (!occ.forward) std::reverse(ids_.begin(), ids_.end());
+  chain.insert(chain.end(), ids_.begin(), ids_.end());
+  return true;
+}
+
+// A degenerate edge's segments, as long in scaled UV as the typical segment of its loop: the
+// triangles fanning into a pole or apex stay well shaped in UV, and their corners on the pole row
+// stay close in UV to the interior points they join (a fan corner far away in u folds the facet).
+int FaceMesher::poleSegments(double length, double typical) {
+  return typical > 0 ? std::clamp(static_cast<int>(std::lround(length / typical)), 1, kMaxPoleSegments) : 4;
+}
+
+// Degenerate edges split to keep pace with their loop's refined edges: each segment into the same
+// number of equal parts in pcurve parameter, so every level's pole points are among the next one's.
+bool FaceMesher::refinePoles(FaceMesh& mesh, std::string& problem) {
+  std::vector<double> lengthSum(topology_.loops.size(), 0.0);
+  std::vector<std::size_t> segmentCount(topology_.loops.size(), 0);
+  bool anyPole = false;
+  for (const Occurrence& occ : occurrences_) {
+    if (topology_.loops[occ.loop][occ.index].degenerated) {
+      anyPole = true;
+      continue;
+    }
+    for (std::size_t i = 1; i < occ.chain.size(); ++i) {
+      const cet::Point2 a = cdt_->point(occ.chain[i - 1]), b = cdt_->point(occ.chain[i]);
+      lengthSum[occ.loop] += std::hypot(b.x - a.x, b.y - a.y);
+      ++segmentCount[occ.loop];
+    }
+  }
+  if (!anyPole) return true;
+  std::vector<gp_Pnt2d> uvs;
+  std::vector<const gp_Pnt*> ps;
+  std::vector<cet::VertexId> chain;
+  for (Occurrence& occ : occurrences_) {
+    const LoopEdge& le = topology_.loops[occ.loop][occ.index];
+    if (!le.degenerated || occ.chain.size() < 2 || segmentCount[occ.loop] == 0) continue;
+    const double typical = lengthSum[occ.loop] / static_cast<double>(segmentCount[occ.loop]);
+    const gp_Pnt2d first = le.pcurve->Value(le.pcurveFirst).Translated(le.shift);
+    const gp_Pnt2d last = le.pcurve->Value(le.pcurveLast).Translated(le.shift);
+    const cet::Point2 sa = scaled(first.X(), first.Y()), sb = scaled(last.X(), last.Y());
+    const std::size_t segments = occ.chain.size() - 1;
+    const std::size_t parts = static_cast<std::size_t>(
+        std::lround(static_cast<double>(poleSegments(std::hypot(sb.x - sa.x, sb.y - sa.y), typical)) / segments));
+    if (parts < 2) continue;
+    chain.clear();
+    for (std::size_t o = 0; o < segments; ++o) {
+      chain.push_back(occ.chain[o]);
+      uvs.clear(), ps.clear();
+      for (std::size_t r = 1; r < parts; ++r) {
+        const double f = static_cast<double>(o * parts + r) / static_cast<double>(segments * parts);
+        uvs.push_back(le.pcurve->Value(le.pcurveFirst + (le.pcurveLast - le.pcurveFirst) * f).Translated(le.shift));
+        ps.push_back(&le.pole);
+      }
+      if (!splitSegment(occ, o, uvs, ps, chain, mesh, problem)) return false;
+    }
+    chain.push_back(occ.chain.back());
+    occ.chain.swap(chain);
+  }
   return true;
 }
 
@@ -665,7 +739,7 @@ bool FaceMesher::clearOfChords(double u, double v, bool forAngle) const {
         if (facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude()) continue;
       }
     }
-    if (kDebugRefine) {
+    if (settings_.trace) {
       std::fprintf(stderr, "  not clear: chord length %g clearance %g distance %g at %g\n", c.ab.Magnitude(), c.clearance,
                    facet.Dot(c.n) / c.ab.Magnitude(), s);
     }
@@ -762,7 +836,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
   const AngleSplit angleSplit{static_cast<float>(std::cos(level.angleRad * (1 + 1e-6))), static_cast<float>(minSize)};
   std::vector<gp_Pnt2d> uvs;
-  if (kDebugRefine) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
+  if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
@@ -861,10 +935,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // chord itself: a cascade towards the boundary that no size test stops.
       const bool override = tooFar || (flipped && r->longest > level.chordal && !onChord(t));
       if (!(r->flags & TriangleRecord::kCollapsed) && !safeSplit(t, u, v, mesh, flipped, forAngle, at - 1) && !override) {
-        if (kDebugRefine) std::fprintf(stderr, "pass %d: triangle %u (split at %d) dropped: not clear of chords\n", pass, t, at);
+        if (settings_.trace) std::fprintf(stderr, "pass %d: triangle %u (split at %d) dropped: not clear of chords\n", pass, t, at);
         continue;
       }
-      if (kDebugRefine) {
+      if (settings_.trace) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, facet %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalCos, r->facetCos, r->longest, r->flags, u, v);
       }

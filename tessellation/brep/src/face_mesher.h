@@ -43,7 +43,11 @@ struct FaceMesherSettings {
   // The run's idle workers, which a large refinement pass shares its measuring with (null: alone).
   // Meshes do not depend on it.
   WorkSharing* sharing = nullptr;
+  bool trace = false;  // print the refinement's split decisions on stderr (traceFace)
 };
+
+// CETVIEW_DEBUG_REFINE=all traces every face's refinement, =N face N's alone (a debugging aid).
+bool traceFace(FaceId face);
 
 class FaceMesher {
  public:
@@ -69,6 +73,11 @@ class FaceMesher {
   gp_Pnt2d boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) const;
   bool buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
   bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
+  bool splitSegment(const Occurrence& occ, std::size_t o, std::vector<gp_Pnt2d>& uvs, std::vector<const gp_Pnt*>& ps,
+                    std::vector<cet::VertexId>& chain, FaceMesh& mesh, std::string& problem);
+  bool refinePoles(FaceMesh& mesh, std::string& problem);
+  static constexpr int kMaxPoleSegments = 1024;
+  static int poleSegments(double length, double typical);
   // Interior refinement to the level's tolerances; false when cancelled.
   bool refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
   // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
@@ -160,6 +169,7 @@ class FaceMesher {
   // Scratch.
   std::vector<cet::Point2> points_;
   std::vector<cet::VertexId> ids_;
+  std::vector<cet::Point2> segmentPoints_;  // a boundary segment's new points (splitSegment)
   std::vector<cet::TriangleId> splitTriangles_;  // the triangle each point of points_ splits
   std::vector<cet::TriangleId> work_, nextWork_;   // triangles a refinement pass looks at (after the first)
   std::vector<cet::InsertOutcome> outcomes_;

@@ -66,6 +66,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   if (!(uMax >= uMin) || !(vMax >= vMin) || !std::isfinite(uMin) || !std::isfinite(vMax)) {
     uMin = std::max(su0_, -1e6), uMax = std::min(su1_, 1e6), vMin = std::max(sv0_, -1e6), vMax = std::min(sv1_, 1e6);
   }
+  findDegenerateRows();
   u0 = uMin, v0 = vMin;
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
   double lu = 0, lv = 0, ku = 0, kv = 0;  // means
@@ -282,15 +283,44 @@ void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) cons
 
 gp_Pnt SurfaceEval::point(double u, double v) const { return direct_ ? direct_->value(u, v) : surface_.Value(u, v); }
 
+void SurfaceEval::findDegenerateRows() {
+  const double uTol = 1e-9 * std::max(uMax - uMin, 1e-300), vTol = 1e-9 * std::max(vMax - vMin, 1e-300);
+  for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+    if (!BRep_Tool::Degenerated(edge)) continue;
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face_, first, last);
+    if (pcurve.IsNull() || !std::isfinite(first) || !std::isfinite(last)) continue;
+    const gp_Pnt2d a = pcurve->Value(first), b = pcurve->Value(last), m = pcurve->Value(0.5 * (first + last));
+    if (std::abs(a.Y() - b.Y()) <= vTol && std::abs(a.Y() - m.Y()) <= vTol) {
+      degenerateRows_.push_back({false, a.Y()});
+    } else if (std::abs(a.X() - b.X()) <= uTol && std::abs(a.X() - m.X()) <= uTol) {
+      degenerateRows_.push_back({true, a.X()});
+    }
+  }
+}
+
+bool SurfaceEval::onDegenerateRow(double u, double v) const {
+  for (const DegenerateRow& row : degenerateRows_) {
+    const bool periodic = row.uConstant ? uPeriodic_ : vPeriodic_;
+    double d = (row.uConstant ? u : v) - row.value;
+    if (periodic) d = std::remainder(d, row.uConstant ? surface_.UPeriod() : surface_.VPeriod());
+    const double tol = 1e-9 * std::max(row.uConstant ? uMax - uMin : vMax - vMin, 1e-300);
+    if (std::abs(d) <= tol) return true;
+  }
+  return false;
+}
+
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;
   d1(u, v, p, du, dv);
   const gp_Vec c = du.Crossed(dv);
   const double m = c.Magnitude();
   // Regular where both derivatives are well away from zero against their typical lengths (at a pole
-  // one of them is rounding noise whose direction means nothing) and not parallel.
+  // one of them is rounding noise whose direction means nothing) and not parallel, off the
+  // degenerate edges.
   const double mu = du.Magnitude(), mv = dv.Magnitude();
-  if (mu > 1e-7 * meanLu_ && mv > 1e-7 * meanLv_ && m > 1e-10 * mu * mv) {
+  if (mu > 1e-7 * meanLu_ && mv > 1e-7 * meanLv_ && m > 1e-10 * mu * mv && !onDegenerateRow(u, v)) {
     n = gp_Dir(c);
     return true;
   }

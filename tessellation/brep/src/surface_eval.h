@@ -33,8 +33,9 @@ class SurfaceEval {
   bool concurrentSafe() const { return concurrentSafe_; }
 
   // Point and unit natural normal (Su x Sv) at (u, v). Returns false where the normal is not
-  // defined by first derivatives (poles, apexes); the normal then comes from higher derivatives or
-  // the neighbourhood, and may still be a poor choice for angle tests.
+  // defined by first derivatives (poles, apexes, and every point of a degenerate edge's iso-line);
+  // the normal then comes from higher derivatives or the neighbourhood, and may still be a poor
+  // choice for angle tests.
   bool pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
   gp_Pnt point(double u, double v) const;
 
@@ -99,6 +100,18 @@ class SurfaceEval {
                      double settle = 1e-3, double enough = 0) const;
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
+
+  // The iso-lines of the face's degenerate edges (one 3D point each). A B-spline's degenerate row is
+  // often not collapsed exactly: its points lie a micron apart, its first derivatives are small but
+  // not noise, and the normal they give swings with the parameter along the row (measured: 80 to 150
+  // degrees from the normals a hundredth of the face away).
+  struct DegenerateRow {
+    bool uConstant = false;  // u = value (else v = value)
+    double value = 0;
+  };
+  void findDegenerateRows();
+  bool onDegenerateRow(double u, double v) const;
+  std::vector<DegenerateRow> degenerateRows_;
 
   // One direction's scaling: x = x[k] + (t - t[k]) * slope[k] in span k (extended linearly past the
   // ends, repeated with the period when periodic). One span: x = (t - t[0]) * slope[0].

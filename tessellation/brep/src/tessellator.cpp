@@ -150,6 +150,7 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
         settings.coincident = 1e-10 * t.model.bounds().diagonal();
         settings.reversed = t.model.faces()[face].reversed;
         settings.sharing = &t.sharing;
+        settings.trace = traceFace(face);
         s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings, std::move(s.eval));
       }
       const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh,
