@@ -428,28 +428,37 @@ TEST(HardCases, ApexRowKeepsPaceWithTheBaseCircle) {
 // point, as CAD exports write three-sided patches, so the edge there is degenerate but the row's
 // first derivative along u is not quite zero. The normal that derivative gives swings with u;
 // counted as a real normal, it sent the refinement down towards the row for the angle and left
-// flipped slivers by it (occ/shell1.brep, trj4's pinched faces).
-TEST(HardCases, PinchedBSplinePatch) {
+// flipped slivers by it (occ/shell1.brep, trj4's pinched faces). Its sides are straight lines out
+// of the pole: a triangle from a point of the pole's row onto one of them has its corners in line
+// in 3D (up to the row's width), edge-on to the surface however small it is (occ/Bottom.brep).
+TopoDS_Face pinchedPatch(double wedge) {
   const int n = 4;
   TColgp_Array2OfPnt poles(1, n, 1, n);
   const double noise[n] = {0.0, 7e-7, -4e-7, 9e-7};
   for (int i = 1; i <= n; ++i) {
-    const double theta = (M_PI / 3) * (i - 1) / (n - 1);
+    const double theta = wedge * (i - 1) / (n - 1);
     poles.SetValue(i, 1, gp_Pnt(noise[i - 1], -noise[n - i], 0.5 * noise[(i + 1) % n]));
     for (int j = 2; j <= n; ++j) {
       const double r = 10.0 * (j - 1) / (n - 1);
-      poles.SetValue(i, j, gp_Pnt(r * std::cos(theta), r * std::sin(theta), 0.4 * r * std::sin(2.0 * theta + j) + 0.05 * r * r));
+      const double bump = (i == 1 || i == n) ? 0.0 : 0.3 * r * std::sin(1.0 * j + i);  // the sides stay straight
+      poles.SetValue(i, j, gp_Pnt(r * std::cos(theta), r * std::sin(theta), r * (0.3 + 0.1 * theta) + bump));
     }
   }
   TColStd_Array1OfReal knots(1, 2);
   TColStd_Array1OfInteger mults(1, 2);
   knots(1) = 0, knots(2) = 1, mults(1) = mults(2) = n;
   Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, knots, knots, mults, mults, n - 1, n - 1);
-  const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-5).Face();
-  int degenerate = 0;
-  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) degenerate += BRep_Tool::Degenerated(TopoDS::Edge(e.Current()));
-  ASSERT_EQ(degenerate, 1);
-  checkAtSeveralDeflections(face, "pinched");
+  return BRepBuilderAPI_MakeFace(surface, 1e-5).Face();
+}
+
+TEST(HardCases, PinchedBSplinePatch) {
+  for (double wedge : {1.0, 0.5}) {
+    const TopoDS_Face face = pinchedPatch(wedge);
+    int degenerate = 0;
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) degenerate += BRep_Tool::Degenerated(TopoDS::Edge(e.Current()));
+    ASSERT_EQ(degenerate, 1);
+    checkAtSeveralDeflections(face, "pinched_" + std::to_string(wedge));
+  }
 }
 
 }  // namespace

@@ -524,9 +524,15 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     // Orientation against the surface.
     const gp_Vec n = gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
     gp_Vec ref(0, 0, 0);
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
       if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
+      else r.flags |= TriangleRecord::kPoleCorner;
+    }
     if (n.Magnitude() <= 1e-12 * longest * longest) {  // the measure's notion of no area (brep/measure.h)
+      r.flags |= TriangleRecord::kFlipped;
+    } else if ((r.flags & TriangleRecord::kPoleCorner) && n.Magnitude() <= 1e-4 * longest * longest) {
+      // Corners in line through a pole (a fan from the pole's row onto a straight edge out of the
+      // pole, in line up to the row's width): the facet's normal is noise, whatever it says.
       r.flags |= TriangleRecord::kFlipped;
     } else if (ref.Magnitude() > 0 && !acrossCrease) {  // corner normals from both sides of a crease: no reference
       r.facetCos = static_cast<float>(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()));
@@ -901,10 +907,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       } else if (angleSplit.splits(*r)) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
-      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && r->longest > minSize) {
+      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) &&
+                 (r->longest > minSize || ((r->flags & TriangleRecord::kPoleCorner) && r->longest > 1e-3 * level.chordal))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
-        // thinner ones).
+        // thinner ones). Below the minimum size too where a corner is a pole: a triangle fanning
+        // from a pole's row onto a straight edge out of the pole has its corners on one line in 3D
+        // (edge-on), however small, and one point inside it ends that.
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
       }
       if (at < 0) continue;
