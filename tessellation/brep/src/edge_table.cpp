@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <unordered_map>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <gp_Pnt2d.hxx>
@@ -74,26 +76,33 @@ bool halvingCount(std::uint32_t n) {
   return n <= 7;
 }
 
-// Equal segments of a circular arc per level: the last level has at most about 14% more segments
-// than it needs (the next count of the form m 2^j, m <= 7), and each coarser level has half of the
-// next one's where that is still enough for it, else as many, so each level's points are among
-// the next one's. Halving the segments level by level from two or three instead ends anywhere
-// between the fewest and twice as many (a circle that needs 77 got 96). Empty when the arc would
-// need absurdly many.
-std::vector<std::uint32_t> arcSegments(double r, double theta, bool closed, const std::vector<Level>& tolerances) {
-  if (!(r > 0) || !(theta > 0) || tolerances.empty()) return {};
-  const std::uint32_t least = closed ? 3 : 2;  // a closed edge must be a polygon
-  std::vector<std::uint32_t> out(tolerances.size());
-  std::uint32_t n = std::max(least, fewestArcSegments(r, theta, tolerances.back()));
-  if (n > 1000000) return {};
+// Equal segments of a circular arc per level, from the fewest each level needs: the last level has
+// at most about 14% more segments than it needs (the next count of the form m 2^j, m <= 7), and
+// each coarser level has half of the next one's where that is still enough for it, else as many,
+// so each level's points are among the next one's. Halving the segments level by level from two
+// or three instead ends anywhere between the fewest and twice as many (a circle that needs 77 got
+// 96). Empty when the arc would need absurdly many.
+std::vector<std::uint32_t> arcSegments(const std::vector<std::uint32_t>& need) {
+  if (need.empty() || need.back() > 1000000) return {};
+  std::vector<std::uint32_t> out(need.size());
+  std::uint32_t n = need.back();
   while (!halvingCount(n)) ++n;
   out.back() = n;
-  for (std::size_t k = tolerances.size() - 1; k-- > 0;) {
-    const std::uint32_t need = std::max(least, fewestArcSegments(r, theta, tolerances[k]));
+  for (std::size_t k = need.size() - 1; k-- > 0;) {
     const std::uint32_t next = out[k + 1];
-    out[k] = next % 2 == 0 && next / 2 >= need ? next / 2 : next;
+    out[k] = next % 2 == 0 && next / 2 >= need[k] ? next / 2 : next;
   }
   return out;
+}
+
+// The fewest segments of each level for an arc of radius r and angle theta (a closed edge must be
+// a polygon: at least 3); empty if not a usable arc.
+std::vector<std::uint32_t> arcNeeds(double r, double theta, bool closed, const std::vector<Level>& tolerances) {
+  if (!(r > 0) || !(theta > 0)) return {};
+  const std::uint32_t least = closed ? 3 : 2;
+  std::vector<std::uint32_t> need(tolerances.size());
+  for (std::size_t k = 0; k < tolerances.size(); ++k) need[k] = std::max(least, fewestArcSegments(r, theta, tolerances[k]));
+  return need;
 }
 
 // The points of `previous` (increasing, from first to last; may be empty) and those dividing
@@ -182,14 +191,16 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::vector<Level> tolerances)
     try {
       BRepAdaptor_Curve curve(edge);
       info.straight = isStraight(curve, info.first, info.last);
-      if (curve.GetType() == GeomAbs_Circle && onPlanesAndCylinders(info.faces))
-        info.arcSegments = arcSegments(curve.Circle().Radius(), info.last - info.first, info.closed, tolerances_);
+      if (curve.GetType() == GeomAbs_Circle && onArcSurfaces(info.faces))
+        info.arcNeeds = arcNeeds(curve.Circle().Radius(), info.last - info.first, info.closed, tolerances_);
       if (v0.IsNull()) info.p0 = curve.Value(info.first);
       if (v1.IsNull()) info.p1 = curve.Value(info.last);
     } catch (const Standard_Failure&) {
       info.broken = true;
     }
   }
+  shareArcCountsOnCones();
+  for (Info& info : info_) info.arcSegments = arcSegments(info.arcNeeds);
 }
 
 void EdgeTable::scalesSet() {
@@ -225,12 +236,47 @@ bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>*
 // cone, beside a torus's tube and on free-form faces, the face meshers' coarse boundary handling
 // (pole copies placed for the first level, triangles standing on long chords) is tuned to the
 // halving's counts: other counts left flipped triangles there.
-bool EdgeTable::onPlanesAndCylinders(const std::vector<FaceUse>& uses) {
+bool EdgeTable::onArcSurfaces(const std::vector<FaceUse>& uses) {
   for (const FaceUse& use : uses) {
     const GeomAbs_SurfaceType type = BRepAdaptor_Surface(use.face, Standard_False).GetType();
-    if (type != GeomAbs_Plane && type != GeomAbs_Cylinder) return false;
+    if (type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone) return false;
   }
   return !uses.empty();
+}
+
+// The circles of one cone (a chamfer's two rims) are cut for the largest of their needs on each
+// level, all alike: with counts of their own (5 and 3 segments on a half turn) a coarse chord of
+// one rim faces a point of the other between its ends, and on a narrow cone the triangle they make
+// stands flipped (the chord's sagitta exceeds the cone's width). Chained cones share too; arcs of
+// different angles keep their own.
+void EdgeTable::shareArcCountsOnCones() {
+  std::vector<EdgeId> group(info_.size());
+  for (EdgeId e = 0; e < group.size(); ++e) group[e] = e;
+  const std::function<EdgeId(EdgeId)> root = [&](EdgeId e) { return group[e] == e ? e : group[e] = root(group[e]); };
+  std::unordered_map<FaceId, EdgeId> firstCircleOfCone;
+  for (EdgeId e = 0; e < info_.size(); ++e) {
+    if (info_[e].arcNeeds.empty()) continue;
+    for (const FaceUse& use : info_[e].faces) {
+      if (BRepAdaptor_Surface(use.face, Standard_False).GetType() != GeomAbs_Cone) continue;
+      const auto [it, added] = firstCircleOfCone.emplace(use.id, e);
+      if (!added) group[root(e)] = root(it->second);
+    }
+  }
+  std::unordered_map<EdgeId, std::vector<EdgeId>> members;
+  for (EdgeId e = 0; e < info_.size(); ++e)
+    if (!info_[e].arcNeeds.empty() && root(e) != e) members[root(e)].push_back(e);
+  for (auto& [r, list] : members) {
+    list.push_back(r);
+    const double span = info_[r].last - info_[r].first;
+    std::vector<std::uint32_t> need = info_[r].arcNeeds;
+    bool sameAngle = true;
+    for (const EdgeId e : list) {
+      sameAngle = sameAngle && std::abs((info_[e].last - info_[e].first) - span) <= 1e-9 * span;
+      for (std::size_t k = 0; k < need.size(); ++k) need[k] = std::max(need[k], info_[e].arcNeeds[k]);
+    }
+    if (!sameAngle) continue;
+    for (const EdgeId e : list) info_[e].arcNeeds = need;
+  }
 }
 
 double EdgeTable::pcurveParameter(const Info& info, const FaceUse& use, double t) {

@@ -80,13 +80,15 @@ class EdgeTable {
     bool closed = false;    // both ends are the same vertex
     bool broken = false;    // no usable curve: the chord between its vertices stands in for it
     std::vector<FaceUse> faces;  // at most two
-    // A circular arc: its equal segments per level (arcSegments()), each level's a divisor of the
-    // next one's; empty for other curves.
-    std::vector<std::uint32_t> arcSegments;
+    // A circular arc: the fewest segments each level needs (arcNeeds(), shared on a cone), and its
+    // equal segments per level (arcSegments()), each level's a divisor of the next one's; empty
+    // for other curves.
+    std::vector<std::uint32_t> arcNeeds, arcSegments;
   };
   void discretiseEdge(EdgeId e, int level, const Level& tolerance);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
-  static bool onPlanesAndCylinders(const std::vector<FaceUse>& uses);
+  static bool onArcSurfaces(const std::vector<FaceUse>& uses);  // planes, cylinders and cones only
+  void shareArcCountsOnCones();
 
   // Segment j of edge e (between its points j and j + 1) at the level at hand.
   struct SegmentId {
