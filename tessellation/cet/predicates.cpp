@@ -1,6 +1,7 @@
 // Exact orient2d / incircle, after Shewchuk's adaptive scheme: a floating-point filter (his error
 // bounds A), then the determinant of the rounded coordinate differences evaluated exactly (his stage
-// B, with bounds derived below), for incircle his stage C (B's value plus the first-order terms of
+// B, with bounds derived below; for incircle to within eps^2 in double words first), for incircle
+// his stage C (B's value plus the first-order terms of
 // the differences' rounding errors: co-circular points of CAD circles, rounded, end there), and the
 // full expansion of the original coordinates only when none of them can decide.
 #include "predicates.h"
@@ -28,6 +29,12 @@ constexpr double kIncircleBoundB = 5.0 * kEpsilon;
 // eps^2 of the permanent; the value of stage B's expansion is off by a few eps of itself.
 constexpr double kIncircleBoundC = (10.0 + 96.0 * kEpsilon) * kEpsilon * kEpsilon;
 constexpr double kResultBound = (3.0 + 8.0 * kEpsilon) * kEpsilon;
+// Stage B in double words (below) is within this times the permanent of the exact determinant of the
+// rounded differences: each minor and lift within 3 eps^2 of itself, each product of them within
+// 7 eps^2 more (double-word bounds, below), the two sums within 3 eps^2 each of their partial sums;
+// about 20 eps^2 of the sum of absolute terms, which the filter's permanent (a few roundings low at
+// most) bounds. Three times that for room.
+constexpr double kDoubleWordBound = 64.0 * kEpsilon * kEpsilon;
 
 std::atomic<unsigned long long> gOrientExact{0};
 std::atomic<unsigned long long> gIncircleExact{0};
@@ -83,6 +90,54 @@ Rounded roundedDifference(double a, double b) {
 // x * y - z * w, exactly.
 Expansion<4> exactCross(double x, double y, double z, double w) {
   return sum(exactProduct(x, y), exact::negate(exactProduct(z, w)));
+}
+
+// Double-word numbers (hi + lo, |lo| at most half an ulp of hi) and two operations with proven
+// relative error bounds (Joldes, Muller and Popescu, "Tight and rigorous error bounds for basic
+// building blocks of double-word arithmetic", ACM TOMS 2017, with u = 2^-53): the accurate sum
+// (their Algorithm 6) within 3u^2 / (1 - 4u) of the exact sum, the product without FMA (their
+// Algorithm 10) within 7u^2 of the exact product.
+struct DoubleWord {
+  double hi, lo;
+};
+
+DoubleWord fastTwoSum(double a, double b) {
+  const double s = a + b;
+  return {s, b - (s - a)};
+}
+
+DoubleWord dwProduct(double a, double b) {
+  DoubleWord r;
+  exact::twoProduct(a, b, r.hi, r.lo);
+  return r;
+}
+
+DoubleWord dwSum(DoubleWord x, DoubleWord y) {
+  double sh, sl, th, tl;
+  exact::twoSum(x.hi, y.hi, sh, sl);
+  exact::twoSum(x.lo, y.lo, th, tl);
+  const DoubleWord v = fastTwoSum(sh, sl + th);
+  return fastTwoSum(v.hi, tl + v.lo);
+}
+
+DoubleWord dwTimes(DoubleWord x, DoubleWord y) {
+  double ch, cl1;
+  exact::twoProduct(x.hi, y.hi, ch, cl1);
+  const double cl2 = x.hi * y.lo + x.lo * y.hi;
+  return fastTwoSum(ch, cl1 + cl2);
+}
+
+DoubleWord dwNegate(DoubleWord x) { return {-x.hi, -x.lo}; }
+
+// The in-circle determinant of the rounded differences, exactly (stage B's value as expansions).
+double incircleOfDifferences(double ax, double ay, double bx, double by, double cx, double cy) {
+  const Expansion<4> bc = exactCross(bx, cy, cx, by);
+  const Expansion<4> ca = exactCross(cx, ay, ax, cy);
+  const Expansion<4> ab = exactCross(ax, by, bx, ay);
+  const Expansion<4> aLift = sum(exactProduct(ax, ax), exactProduct(ay, ay));
+  const Expansion<4> bLift = sum(exactProduct(bx, bx), exactProduct(by, by));
+  const Expansion<4> cLift = sum(exactProduct(cx, cx), exactProduct(cy, cy));
+  return sum(sum(product(aLift, bc), product(bLift, ca)), product(cLift, ab)).sign();
 }
 
 // The stages after the filter, out of line: the hot callers inline only the filter. detSum is the
@@ -145,22 +200,29 @@ double incircleIfNothingRounds(double adx, double ady, double bdx, double bdy, d
         incircleIfNothingRounds(adx.value, ady.value, bdx.value, bdy.value, cdx.value, cdy.value, exact);
     if (exact) return det;
   }
-  const Expansion<4> bc = exactCross(bdx.value, cdy.value, cdx.value, bdy.value);
-  const Expansion<4> ca = exactCross(cdx.value, ady.value, adx.value, cdy.value);
-  const Expansion<4> ab = exactCross(adx.value, bdy.value, bdx.value, ady.value);
-  const Expansion<4> aLift = sum(exactProduct(adx.value, adx.value), exactProduct(ady.value, ady.value));
-  const Expansion<4> bLift = sum(exactProduct(bdx.value, bdx.value), exactProduct(bdy.value, bdy.value));
-  const Expansion<4> cLift = sum(exactProduct(cdx.value, cdx.value), exactProduct(cdy.value, cdy.value));
-  const auto stageB = sum(sum(product(aLift, bc), product(bLift, ca)), product(cLift, ab));
-  double det = stageB.sign();
-  if (!inexact) return det;
-  if (std::fabs(det) > kIncircleBoundB * permanent) return det;
+  const double ax = adx.value, ay = ady.value, bx = bdx.value, by = bdy.value, cx = cdx.value, cy = cdy.value;
+  // Stage B's value in double words (within kDoubleWordBound of the permanent): near co-circular
+  // rounded points (CAD circles) land here by the hundred per face, and the expansions cost ten
+  // times as much.
+  const DoubleWord bc = dwSum(dwProduct(bx, cy), dwNegate(dwProduct(cx, by)));
+  const DoubleWord ca = dwSum(dwProduct(cx, ay), dwNegate(dwProduct(ax, cy)));
+  const DoubleWord ab = dwSum(dwProduct(ax, by), dwNegate(dwProduct(bx, ay)));
+  const DoubleWord aLift = dwSum(dwProduct(ax, ax), dwProduct(ay, ay));
+  const DoubleWord bLift = dwSum(dwProduct(bx, bx), dwProduct(by, by));
+  const DoubleWord cLift = dwSum(dwProduct(cx, cx), dwProduct(cy, cy));
+  const DoubleWord stageB = dwSum(dwSum(dwTimes(aLift, bc), dwTimes(bLift, ca)), dwTimes(cLift, ab));
+  const double slack = kDoubleWordBound * permanent;  // |stageB - the exact value| <= slack
+  if (!inexact) {
+    // The differences are exact: stage B's value is the determinant.
+    if (std::fabs(stageB.hi) > 2.0 * slack) return stageB.hi;
+    return incircleOfDifferences(ax, ay, bx, by, cx, cy);
+  }
+  if (std::fabs(stageB.hi) > kIncircleBoundB * permanent + 2.0 * slack) return stageB.hi;
   // Stage C: the first-order terms of the differences' rounding errors (their tails) added to the
   // value of stage B's determinant; what is left out is second order in them.
-  det = stageB.estimate();
+  double det = stageB.hi + stageB.lo;
   const double adxt = adx.tail, adyt = ady.tail, bdxt = bdx.tail, bdyt = bdy.tail, cdxt = cdx.tail, cdyt = cdy.tail;
-  const double ax = adx.value, ay = ady.value, bx = bdx.value, by = bdy.value, cx = cdx.value, cy = cdy.value;
-  const double boundC = kIncircleBoundC * permanent + kResultBound * std::fabs(det);
+  const double boundC = kIncircleBoundC * permanent + kResultBound * std::fabs(det) + 2.0 * slack;
   det += ((ax * ax + ay * ay) * ((bx * cdyt + cy * bdxt) - (by * cdxt + cx * bdyt)) +
           2.0 * (ax * adxt + ay * adyt) * (bx * cy - by * cx)) +
          ((bx * bx + by * by) * ((cx * adyt + ay * cdxt) - (cy * adxt + ax * cdyt)) +

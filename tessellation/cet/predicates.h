@@ -4,7 +4,9 @@
 // Predicates", Discrete & Computational Geometry 18 (1997). A floating-point evaluation with a
 // forward error bound decides almost every case; when the bound cannot decide, the determinant of
 // the rounded coordinate differences is evaluated exactly (exact outright when no difference was
-// rounded, and decisive whenever it is not nearly zero), for in-circle then that value corrected by
+// rounded, and decisive whenever it is not nearly zero; for in-circle in double-word arithmetic
+// with a proven eps^2 bound first, expansions only when that cannot decide), for in-circle then
+// that value corrected by
 // the first-order terms of the differences' rounding errors (Shewchuk's stage C: enough for points
 // that are co-circular only up to rounding), and only then the full determinant with expansion
 // arithmetic (expansion.h). The sign returned is always exact for
