@@ -183,7 +183,9 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
         r.cetview_max_angle_deg = std::max(r.cetview_max_angle_deg, fq.maxCornerAngle * 180 / M_PI);
         r.cetview_faces_over_angle += fq.maxCornerAngle > angleLimit;
         r.cetview_degenerate += fq.degenerate;
+        r.cetview_flipped += fq.flipped;
       }
+      for (int k = 0; k < tess->lastLevel(); ++k) r.cetview_flipped_coarse += countFlipped(*tess, k);
       for (PartId p = 0; p < model.parts().size(); ++p) {
         if (model.parts()[p].closed) r.cetview_cracks += countOpenEdges(partSoup(*tess, p), weld);
       }
@@ -284,6 +286,8 @@ std::string benchJson(const BenchResult& r) {
   num("cetview_cracks", static_cast<double>(r.cetview_cracks));
   num("brepmesh_cracks", static_cast<double>(r.brepmesh_cracks));
   num("cetview_degenerate", static_cast<double>(r.cetview_degenerate));
+  num("cetview_flipped", static_cast<double>(r.cetview_flipped));
+  num("cetview_flipped_coarse", static_cast<double>(r.cetview_flipped_coarse));
   num("brepmesh_degenerate", static_cast<double>(r.brepmesh_degenerate));
   num("cetview_peak_mb", r.cetview_peak_mb);
   num("brepmesh_peak_mb", r.brepmesh_peak_mb);

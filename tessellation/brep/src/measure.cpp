@@ -73,6 +73,44 @@ double measureCornerAngle(const SurfaceEval& eval, const double* positions, cons
   return worst;
 }
 
+namespace {
+
+// The orientation of triangle i of `idx` against its corners' surface normals: counts it in
+// degenerate (no area: |cross| <= 1e-12 * longest edge squared) or flipped (facing away).
+void classifyTriangle(const FaceMesh& m, const std::vector<std::uint32_t>& idx, std::size_t i, std::size_t& degenerate,
+                      std::size_t& flipped) {
+  gp_XYZ p[3], n(0, 0, 0);
+  for (int c = 0; c < 3; ++c) {
+    const std::uint32_t v = idx[i + static_cast<std::size_t>(c)];
+    p[c] = gp_XYZ(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+    n += gp_XYZ(m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2]);
+  }
+  const gp_XYZ cr = (p[1] - p[0]).Crossed(p[2] - p[0]);
+  const double longest = std::max({(p[1] - p[0]).Modulus(), (p[2] - p[1]).Modulus(), (p[0] - p[2]).Modulus()});
+  if (cr.Modulus() <= 1e-12 * longest * longest) {
+    ++degenerate;
+  } else if (cr.Dot(n) <= 0) {
+    ++flipped;
+  }
+}
+
+std::size_t levelIndex(const FaceMesh& m, int level) {
+  return level < 0 ? m.levels.size() - 1 : std::min<std::size_t>(static_cast<std::size_t>(level), m.levels.size() - 1);
+}
+
+}  // namespace
+
+std::size_t countFlipped(const Tessellator& t, int level) {
+  std::size_t flipped = 0, degenerate = 0;
+  for (FaceId f = 0; f < t.model().faces().size(); ++f) {
+    const FaceMesh& m = t.faceMesh(f);
+    if (m.levels.empty()) continue;
+    const std::vector<std::uint32_t>& idx = m.levels[levelIndex(m, level)];
+    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, degenerate, flipped);
+  }
+  return flipped;
+}
+
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned threads) {
   const ModelImpl& model = t.model().impl();
   std::vector<FaceQuality> out(model.faces.size());
@@ -80,24 +118,9 @@ std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned 
     const FaceMesh& m = t.faceMesh(static_cast<FaceId>(f));
     FaceQuality& q = out[f];
     if (m.levels.empty()) return;
-    const std::size_t k = level < 0 ? m.levels.size() - 1 : std::min<std::size_t>(static_cast<std::size_t>(level), m.levels.size() - 1);
-    const std::vector<std::uint32_t>& idx = m.levels[k];
+    const std::vector<std::uint32_t>& idx = m.levels[levelIndex(m, level)];
     q.triangles = idx.size() / 3;
-    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
-      gp_XYZ p[3], n(0, 0, 0);
-      for (int c = 0; c < 3; ++c) {
-        const std::uint32_t v = idx[i + static_cast<std::size_t>(c)];
-        p[c] = gp_XYZ(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-        n += gp_XYZ(m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2]);
-      }
-      const gp_XYZ cr = (p[1] - p[0]).Crossed(p[2] - p[0]);
-      const double longest = std::max({(p[1] - p[0]).Modulus(), (p[2] - p[1]).Modulus(), (p[0] - p[2]).Modulus()});
-      if (cr.Modulus() <= 1e-12 * longest * longest) {
-        ++q.degenerate;
-      } else if (cr.Dot(n) <= 0) {
-        ++q.flipped;
-      }
-    }
+    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, q.degenerate, q.flipped);
     try {
       SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
       q.maxDeviation = measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data(), q.triangles);
@@ -117,7 +140,7 @@ std::vector<std::vector<float>> measureTriangles(const Tessellator& t, int level
   parallelFor(out.size(), threads, [&](std::size_t f, unsigned) {
     const FaceMesh& m = t.faceMesh(static_cast<FaceId>(f));
     if (m.levels.empty()) return;
-    const std::size_t k = level < 0 ? m.levels.size() - 1 : std::min<std::size_t>(static_cast<std::size_t>(level), m.levels.size() - 1);
+    const std::size_t k = levelIndex(m, level);
     const std::vector<std::uint32_t>& idx = m.levels[k];
     std::vector<float>& d = out[f];
     d.assign(idx.size() / 3, INFINITY);

@@ -41,6 +41,8 @@ struct BenchResult {
   std::size_t cetview_faces_over_angle = 0, brepmesh_faces_over_angle = 0;
   std::size_t cetview_cracks = 0, brepmesh_cracks = 0;          // open edges after welding, closed parts only
   std::size_t cetview_degenerate = 0, brepmesh_degenerate = 0;
+  // cetview's flipped triangles (brep/measure.h) on the final level, and over its coarser levels.
+  std::size_t cetview_flipped = 0, cetview_flipped_coarse = 0;
   double cetview_peak_mb = 0, brepmesh_peak_mb = 0;             // peak heap growth while meshing
   std::size_t repaired_faces = 0, fallback_faces = 0, empty_faces = 0;
 };

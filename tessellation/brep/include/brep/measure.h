@@ -25,6 +25,10 @@ struct FaceQuality {
 // cylinders and spheres it is also computed exactly per triangle (the largest distance in closed form).
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level = -1, unsigned threads = 1);
 
+// Flipped triangles (as FaceQuality::flipped) over every face of level `level` (each face's last
+// level for -1), without the surface measures: cheap enough for every level of a bench run.
+std::size_t countFlipped(const Tessellator& t, int level);
+
 // The same measure per triangle (the viewer's deviation heat map): out[f][i] is the deviation of
 // triangle i of face f's level `level` (each face's last level for -1), in the order of
 // faceMesh(f).levels; INFINITY where the surface cannot be evaluated.
