@@ -1,5 +1,6 @@
 // Hard cases built with OpenCASCADE's modelling API: poles, apexes, seams, periodic B-splines, many
-// holes, thin faces, tiny edges, a surface of revolution touching its axis.
+// holes, thin faces, tiny edges, a surface of revolution touching its axis, a pinched B-spline row,
+// circles of planes, cylinders and cones.
 #include <gtest/gtest.h>
 
 #include <algorithm>

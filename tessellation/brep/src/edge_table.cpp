@@ -232,10 +232,10 @@ bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>*
   return true;
 }
 
-// Only planes and cylinders use the edge (a hole in a plate, a shaft's end). Next to the apex of a
-// cone, beside a torus's tube and on free-form faces, the face meshers' coarse boundary handling
-// (pole copies placed for the first level, triangles standing on long chords) is tuned to the
-// halving's counts: other counts left flipped triangles there.
+// Only planes, cylinders and cones use the edge (a hole in a plate, a shaft's end, a chamfer's rim).
+// Beside a torus's tube and on spheres and free-form faces the halving's counts stay: other counts
+// left flipped triangles on a torus's coarse levels (Axis_of_bearing) and more triangles on spheres
+// (CylinderHead).
 bool EdgeTable::onArcSurfaces(const std::vector<FaceUse>& uses) {
   for (const FaceUse& use : uses) {
     const GeomAbs_SurfaceType type = BRepAdaptor_Surface(use.face, Standard_False).GetType();
