@@ -97,5 +97,21 @@ TEST(OcctMiscFlips, CountFlippedIsThePerFaceMeasuresSum) {
   EXPECT_GT(coarse, 0u);
 }
 
+// occ/terrain.brep at 0.1%: one B-spline face whose u = max side rises as a rim, its normal turning
+// 70-120 degrees within 20 units of a side 8000 long. A standing triangle's apex half a chord away
+// passed level 1's angle by a hair while every point nearer the chord failed it, so the face mesher
+// crept towards the chord and left slivers a hair inside the boundary: 100 flipped triangles on
+// each of levels 1-4 before the edges checked lower apexes too. Every level must be clean.
+TEST(OcctMiscFlips, TerrainsRimLeavesNoSlivers) {
+  const std::string path = std::string(CETVIEW_OCCT_DATA) + "/occ/terrain.brep";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
+  LoadResult r = loadModel(path);
+  ASSERT_TRUE(r) << r.error;
+  auto t = Tessellator::create(*r.model, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(t && t->run(2));
+  ASSERT_GE(t->lastLevel(), 4);
+  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -54,6 +54,9 @@ constexpr int kMaxDepth = 24;  // 2^24 segments per coarse segment: beyond any s
 // split such edges up to 4 times finer than the face needed (Propeller 12136 -> 7968 triangles,
 // 2.5% fewer over the bench's models; 0.35 and 0.65 both did worse).
 constexpr double kStandingHeight = 0.5;
+// The lowest of the triangles standing on a segment whose normals are checked too (heights halve
+// from kStandingHeight): 8 times as long as high.
+constexpr double kLowestStanding = 0.25;
 
 // The fewest equal segments of a circular arc (radius r, angle theta) that meet a level's criteria
 // in discretiseEdge(): the sagitta within the chordal tolerance and the tangent turn within the
@@ -417,47 +420,63 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
           n[k] = gp_Vec(0, 0, 0);
       }
     };
-    // How far a triangle of height h (in the face's scaled UV) standing on the segment's UV chord
-    // misses the tolerances: the larger of its centroid's sag over the chordal tolerance and its
-    // corners' normal spread over the angular one, or twice over if the triangle folds. The apex
-    // stays inside the face's parameter box.
-    auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, double height, int side) {
+    // How far triangles standing on the segment's UV chord miss the tolerances: the tallest (apex
+    // kStandingHeight of the chord's length away, in the face's scaled UV) by the larger of its
+    // centroid's sag over the chordal tolerance and its corners' normal spread over the angular
+    // one, or twice over if it folds; lower ones (apexes on the same median, down to
+    // kLowestStanding) by their spread alone. A face may bend sharply in a strip beside
+    // its boundary (terrain's rim turns 70-120 degrees within 20 units of a side 8000 long): the
+    // tall triangle's apex lies past the strip and passes, but every point the face mesher can
+    // put there fails the angle against the chord's ends, so its refinement crept towards the
+    // chord and left slivers a hair inside the boundary. Apexes stay inside the face's parameter box.
+    auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side) {
       const FaceUse& use = info.faces[k];
       const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
       const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
       const double len = std::hypot(dx, dy);
       if (!(len > 0)) return 0.0;
-      const double h = height * len * side;
-      const double au = 0.5 * (a.X() + b.X()) - h * dy / len / use.scale.su;
-      const double av = 0.5 * (a.Y() + b.Y()) + h * dx / len / use.scale.sv;
-      // Outside the face's parameter box the face is narrower than the triangle: its width, not
-      // this segment, limits the triangles there.
-      if (au < use.scale.uMin || au > use.scale.uMax || av < use.scale.vMin || av > use.scale.vMax) return 0.0;
-      gp_Pnt apex, c;
-      gp_Vec du, dv, dua, dva, dub, dvb;
-      d1(k, au, av, apex, du, dv);
-      const gp_Vec nApex = du.Crossed(dv);
-      d1(k, (a.X() + b.X() + au) / 3, (a.Y() + b.Y() + av) / 3, c, du, dv);
-      const gp_Vec nc = du.Crossed(dv);
       gp_Pnt tmpA, tmpB;
-      d1(k, a.X(), a.Y(), tmpA, dua, dva);
-      d1(k, b.X(), b.Y(), tmpB, dub, dvb);
-      const gp_Vec na = dua.Crossed(dva), nb = dub.Crossed(dvb);
-      double bad = 0;
-      if (nc.Magnitude() > 0) {
-        const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
-        bad = std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / tol.chordal;
+      gp_Vec du, dv;
+      d1(k, a.X(), a.Y(), tmpA, du, dv);
+      const gp_Vec na = du.Crossed(dv);
+      d1(k, b.X(), b.Y(), tmpB, du, dv);
+      const gp_Vec nb = du.Crossed(dv);
+      const double ma = na.Magnitude(), mb = nb.Magnitude();
+      double worst = 0;
+      for (double height = kStandingHeight; height >= kLowestStanding; height *= 0.5) {
+        const double h = height * len * side;
+        const double au = 0.5 * (a.X() + b.X()) - h * dy / len / use.scale.su;
+        const double av = 0.5 * (a.Y() + b.Y()) + h * dx / len / use.scale.sv;
+        // Outside the face's parameter box the face is narrower than the triangle: its width, not
+        // this segment, limits the triangles there (the lower ones too: a narrow fillet turns
+        // steadily across, and the edges on its far side set its rows).
+        if (au < use.scale.uMin || au > use.scale.uMax || av < use.scale.vMin || av > use.scale.vMax) break;
+        gp_Pnt apex;
+        d1(k, au, av, apex, du, dv);
+        const gp_Vec nApex = du.Crossed(dv);
+        if (height == kStandingHeight) {
+          gp_Pnt c;
+          d1(k, (a.X() + b.X() + au) / 3, (a.Y() + b.Y() + av) / 3, c, du, dv);
+          const gp_Vec nc = du.Crossed(dv);
+          if (nc.Magnitude() > 0) {
+            const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
+            worst = std::max(worst, std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / tol.chordal);
+          }
+        }
+        worst = std::max(worst, std::max(angleBetween(na, nApex), angleBetween(nb, nApex)) / tol.angleRad);
+        // A facet nearly edge-on to the surface (the face mesher's fold rule), or flipped: the chord
+        // sags beside the segment as far as the apex reaches, so no point can stand on it. (Asked
+        // of the tall triangle only: a low one on a curved chord always tilts, and the face mesher
+        // is free to stand a taller one there.)
+        const double mApex = nApex.Magnitude();
+        if (height == kStandingHeight && ma > 0 && mb > 0 && mApex > 0) {
+          const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
+          const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
+          if (facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude()) return 2.0;
+        }
+        if (worst > 1.0) break;
       }
-      const double spread = std::max(angleBetween(na, nApex), angleBetween(nb, nApex));
-      // A facet nearly edge-on to the surface (the face mesher's fold rule), or flipped: the chord
-      // sags beside the segment as far as the apex reaches, so no point can stand on it.
-      const double ma = na.Magnitude(), mb = nb.Magnitude(), mApex = nApex.Magnitude();
-      if (ma > 0 && mb > 0 && mApex > 0) {
-        const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
-        const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
-        if (facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude()) return 2.0;
-      }
-      return std::max(bad, spread / tol.angleRad);
+      return worst;
     };
     // Not on planes, cylinders, cones and spheres: they bend the same way next to the boundary as
     // along it, which the normal criterion above already covers. A torus does not: beside a
@@ -467,7 +486,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         if (!info.faces[k].scale.bendsBeside) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
-          if (standing(k, ta, tb, pa, pb, kStandingHeight, side) > 1.0) return true;
+          if (standing(k, ta, tb, pa, pb, side) > 1.0) return true;
         }
       }
       return false;

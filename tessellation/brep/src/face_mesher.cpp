@@ -840,7 +840,9 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = (exactDeviation_ ? kExactDeviationMargin : kDeviationMargin) * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
-  const AngleSplit angleSplit{static_cast<float>(std::cos(level.angleRad * (1 + 1e-6))), static_cast<float>(minSize)};
+  // The records keep cosines in float (about 6e-8 apart near the tolerance, 5e-7 of the angle):
+  // the threshold sits a little inside the angle so that no rounding lets an edge past it.
+  const AngleSplit angleSplit{static_cast<float>(std::cos(level.angleRad * (1 - 2e-6))), static_cast<float>(minSize)};
   std::vector<gp_Pnt2d> uvs;
   if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
