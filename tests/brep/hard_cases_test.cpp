@@ -1,6 +1,6 @@
 // Hard cases built with OpenCASCADE's modelling API: poles, apexes, seams, periodic B-splines, many
 // holes, thin faces, tiny edges, a surface of revolution touching its axis, a pinched B-spline row,
-// circles of planes, cylinders and cones.
+// circles of planes, cylinders and cones, a slight arc.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +25,9 @@
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_Ellipse.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <gp_Elips.hxx>
 #include <BRepLib.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom_CylindricalSurface.hxx>
@@ -447,6 +450,36 @@ TEST(HardCases, AChamfersRimsShareTheirSegments) {
     expectNestedEqualSegments(*rims[0], radius, chordal);
     expectNestedEqualSegments(*rims[1], radius, chordal);
   }
+}
+
+// A slight arc (an ellipse arc of 2.3 degrees at the end of its major axis, sagging 0.04 from its
+// chord) that one chord follows within the final tolerance takes one segment on every level, as
+// BRepMesh gives it: the plane face it bounds with three lines is two triangles throughout. (Every
+// curve used to start from two segments: 3 triangles, and 240 more on asitus's 1616 faces, where
+// such arcs join planes to cylinders.) Where the sag exceeds the tolerance, the arc is split.
+TEST(HardCases, ASlightArcTakesOneChord) {
+  const gp_Elips ellipse(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), 200, 100);
+  Handle(Geom_TrimmedCurve) arc = new Geom_TrimmedCurve(new Geom_Ellipse(ellipse), -0.02, 0.02);
+  const gp_Pnt p1 = arc->Value(-0.02), p2 = arc->Value(0.02);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(arc).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(p2, gp_Pnt(190, p2.Y(), 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(190, p2.Y(), 0), gp_Pnt(190, p1.Y(), 0)).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(190, p1.Y(), 0), p1).Edge());
+  ASSERT_TRUE(wire.IsDone());
+  BRepBuilderAPI_MakeFace face(wire.Wire(), Standard_True);
+  ASSERT_TRUE(face.IsDone());
+  auto model = test::loadShape(face.Face(), "slight arc");
+  ASSERT_TRUE(model);
+  {
+    auto t = test::tessellateAndCheck(*model, test::absolute(0.05));
+    ASSERT_TRUE(t);
+    ASSERT_GE(t->lastLevel(), 2);
+    for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(t->faceMesh(0).levels[static_cast<std::size_t>(k)].size(), 6u) << "level " << k;
+  }
+  auto t = test::tessellateAndCheck(*model, test::absolute(0.02));
+  ASSERT_TRUE(t);
+  EXPECT_GT(t->faceMesh(0).levels.back().size(), 6u);
 }
 
 // A cone's apex row (its degenerate edge in UV) is split with every level like the base circle,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <unordered_map>
 
 #include <BRepAdaptor_Curve.hxx>
@@ -179,6 +180,7 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::vector<Level> tolerances)
       if (!use.pcurve.IsNull()) info_[e].faces.push_back(use);
     }
   }
+  std::map<std::pair<const void*, const void*>, std::size_t> edgeByEnds;
   for (std::size_t e = 0; e < n; ++e) {
     levels_[e].resize(levelCount);
     const TopoDS_Edge edge = TopoDS::Edge(model.edgeShapes[e].Oriented(TopAbs_FORWARD));
@@ -190,6 +192,11 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::vector<Level> tolerances)
     if (!v0.IsNull()) info.p0 = BRep_Tool::Pnt(v0);
     if (!v1.IsNull()) info.p1 = BRep_Tool::Pnt(v1);
     info.closed = !v0.IsNull() && v0.IsSame(v1);
+    if (!info.degenerated && !info.closed && !v0.IsNull() && !v1.IsNull()) {
+      const auto ends = std::minmax<const void*>(v0.TShape().get(), v1.TShape().get());
+      const auto [it, added] = edgeByEnds.emplace(std::make_pair(ends.first, ends.second), e);
+      if (!added) info.sharesEnds = info_[it->second].sharesEnds = true;
+    }
     if (info.degenerated) continue;
     try {
       BRepAdaptor_Curve curve(edge);
@@ -384,16 +391,10 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
   std::vector<double> seedT;
   if (level > 0) {
     seedT = levels_[e][static_cast<std::size_t>(level - 1)].t;
-  } else if (info.arcSegments.empty()) {
-    // Coarsest: one segment for a line, two for a curve, three for a closed edge (a loop of its
-    // own must be a polygon).
-    const int segments = info.closed ? 3 : (info.straight ? 1 : 2);
-    for (int i = 0; i <= segments; ++i) seedT.push_back(info.first + (info.last - info.first) * i / segments);
   }
   if (!info.arcSegments.empty()) seedT = withEqualSegments(seedT, info.first, info.last, info.arcSegments[static_cast<std::size_t>(level)]);
   try {
     BRepAdaptor_Curve curve(edge);
-    const double minSize = 0.1 * tol.chordal;  // below it the angle criteria are not applied (as BRepMesh's MinSize)
     // Surface normals of the faces along the edge (their parameter maps linearly onto the edge's).
     std::vector<BRepAdaptor_Surface> surfaces;
     for (const FaceUse& use : info.faces) surfaces.emplace_back(use.face, Standard_False);
@@ -429,7 +430,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // tall triangle's apex lies past the strip and passes, but every point the face mesher can
     // put there fails the angle against the chord's ends, so its refinement crept towards the
     // chord and left slivers a hair inside the boundary. Apexes stay inside the face's parameter box.
-    auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side) {
+    auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side, const Level& crit) {
       const FaceUse& use = info.faces[k];
       const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
       const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
@@ -460,10 +461,10 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
           const gp_Vec nc = du.Crossed(dv);
           if (nc.Magnitude() > 0) {
             const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
-            worst = std::max(worst, std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / tol.chordal);
+            worst = std::max(worst, std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / crit.chordal);
           }
         }
-        worst = std::max(worst, std::max(angleBetween(na, nApex), angleBetween(nb, nApex)) / tol.angleRad);
+        worst = std::max(worst, std::max(angleBetween(na, nApex), angleBetween(nb, nApex)) / crit.angleRad);
         // A facet nearly edge-on to the surface (the face mesher's fold rule), or flipped: the chord
         // sags beside the segment as far as the apex reaches, so no point can stand on it. (Asked
         // of the tall triangle only: a low one on a curved chord always tilts, and the face mesher
@@ -481,20 +482,15 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // Not on planes, cylinders, cones and spheres: they bend the same way next to the boundary as
     // along it, which the normal criterion above already covers. A torus does not: beside a
     // circle on its top, the tube turns down.
-    auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
+    auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const Level& crit) {
       for (std::size_t k = 0; k < uses; ++k) {
         if (!info.faces[k].scale.bendsBeside) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
-          if (standing(k, ta, tb, pa, pb, side) > 1.0) return true;
+          if (standing(k, ta, tb, pa, pb, side, crit) > 1.0) return true;
         }
       }
       return false;
-    };
-    auto pointAt = [&](std::size_t i, double t) {
-      if (i == 0) return info.p0;
-      if (i + 1 == seedT.size()) return info.p1;
-      return curve.Value(t);
     };
     struct Item {
       double ta, tb;
@@ -502,6 +498,57 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       gp_Vec da, db;
       gp_Vec na[2], nb[2];
       int depth;
+    };
+    // Whether segment s misses the criteria of tolerance `tol` and must be halved.
+    auto misses = [&](const Item& s, const Level& crit) {
+      if (s.depth >= kMaxDepth || !(s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb)))) return false;
+      const double minSize = 0.1 * crit.chordal;  // below it the angle criteria are not applied (as BRepMesh's MinSize)
+      const double chord = s.pa.Distance(s.pb);
+      if (!info.straight) {
+        for (double f : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875})
+          if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > crit.chordal) return true;
+        if (chord > minSize) {
+          const gp_Vec chordDir(s.pa, s.pb);
+          if (angleBetween(s.da, s.db) > crit.angleRad || angleBetween(s.da, chordDir) > crit.angleRad ||
+              angleBetween(chordDir, s.db) > crit.angleRad)
+            return true;
+        }
+      }
+      if (!(chord > minSize)) return false;
+      for (std::size_t k = 0; k < uses; ++k)
+        if (angleBetween(s.na[k], s.nb[k]) > crit.angleRad) return true;
+      return standingFails(s.ta, s.tb, s.pa, s.pb, crit);
+    };
+    auto itemAt = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
+      Item s{ta, tb, pa, pb, {}, {}, {}, {}, 0};
+      gp_Pnt tmp;
+      curve.D1(ta, tmp, s.da);
+      curve.D1(tb, tmp, s.db);
+      normalsAt(ta, s.na);
+      normalsAt(tb, s.nb);
+      return s;
+    };
+    if (seedT.empty()) {
+      // Coarsest: one segment for a line, three for a closed edge (a loop of its own must be a
+      // polygon), and for a curve one where that chord alone meets the final level's criteria (a
+      // slight arc: it then stays one segment on every level), else two. Beside a torus or a
+      // free-form face with a quarter of the chordal tolerance: a chord sagging nearly the whole
+      // tolerance there keeps the face's points away (its clearance) where two chords, sagging a
+      // quarter as much, let them in (Bottom's face 50 at 1% kept 60-degree edges). Not where
+      // another edge joins the same two vertices: two single chords between them would close a
+      // loop of no area.
+      int segments = info.closed ? 3 : (info.straight ? 1 : 2);
+      Level slight = tolerances_.back();
+      for (const FaceUse& use : info.faces)
+        if (use.scale.bendsBeside) slight.chordal = 0.25 * tolerances_.back().chordal;
+      if (segments == 2 && !info.sharesEnds && !misses(itemAt(info.first, info.last, info.p0, info.p1), slight))
+        segments = 1;
+      for (int i = 0; i <= segments; ++i) seedT.push_back(info.first + (info.last - info.first) * i / segments);
+    }
+    auto pointAt = [&](std::size_t i, double t) {
+      if (i == 0) return info.p0;
+      if (i + 1 == seedT.size()) return info.p1;
+      return curve.Value(t);
     };
     std::vector<Item> stack;
     gp_Pnt pPrev = pointAt(0, seedT[0]);
@@ -521,26 +568,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       while (!stack.empty()) {
         Item s = stack.back();
         stack.pop_back();
-        bool split = false;
-        if (s.depth < kMaxDepth && s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb))) {
-          const double chord = s.pa.Distance(s.pb);
-          if (!info.straight) {
-            for (double f : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875}) {
-              if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > tol.chordal) {
-                split = true;
-                break;
-              }
-            }
-            if (!split && chord > minSize) {
-              const gp_Vec chordDir(s.pa, s.pb);
-              split = angleBetween(s.da, s.db) > tol.angleRad || angleBetween(s.da, chordDir) > tol.angleRad ||
-                      angleBetween(chordDir, s.db) > tol.angleRad;
-            }
-          }
-          for (std::size_t k = 0; k < uses && !split && chord > minSize; ++k) split = angleBetween(s.na[k], s.nb[k]) > tol.angleRad;
-          if (!split && chord > minSize) split = standingFails(s.ta, s.tb, s.pa, s.pb);
-        }
-        if (!split) {
+        if (!misses(s, tol)) {
           out.t.push_back(s.tb);
           out.p.push_back(s.pb);
           continue;

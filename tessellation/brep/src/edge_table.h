@@ -78,6 +78,7 @@ class EdgeTable {
     bool degenerated = false;
     bool straight = false;  // a line: one segment is exact
     bool closed = false;    // both ends are the same vertex
+    bool sharesEnds = false;  // another edge joins the same two vertices
     bool broken = false;    // no usable curve: the chord between its vertices stands in for it
     std::vector<FaceUse> faces;  // at most two
     // A circular arc: the fewest segments each level needs (arcNeeds(), shared on a cone), and its
