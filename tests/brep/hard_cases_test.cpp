@@ -1,6 +1,6 @@
 // Hard cases built with OpenCASCADE's modelling API: poles, apexes, seams, periodic B-splines, many
 // holes, thin faces, tiny edges, a surface of revolution touching its axis, a pinched B-spline row,
-// circles of planes, cylinders and cones, a slight arc.
+// circles of planes, cylinders and cones, a slight arc, a narrow cone under coarse chords.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +25,7 @@
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_ConicalSurface.hxx>
 #include <Geom_Ellipse.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <gp_Elips.hxx>
@@ -41,8 +42,10 @@
 #include <Geom2d_Curve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <gp_Circ.hxx>
 
+#include "brep/measure.h"
 #include "test_support.h"
 
 namespace cetview::brep {
@@ -480,6 +483,41 @@ TEST(HardCases, ASlightArcTakesOneChord) {
   auto t = test::tessellateAndCheck(*model, test::absolute(0.02));
   ASSERT_TRUE(t);
   EXPECT_GT(t->faceMesh(0).levels.back().size(), 6u);
+}
+
+// A narrow cone (a chamfer 0.6 wide on a rim 21 in radius) in a model a thousand times larger, so
+// that the coarse levels' rim chords sag further than the cone is wide; its bottom rim is two
+// edges, so the rims' points do not line up. A chord of one rim facing a point of the other between
+// its ends made a flipped triangle on levels 0-2 (bug33398's chamfers) until the edges checked the
+// triangle that reaches across a narrow face: every level must be clean.
+TEST(HardCases, ANarrowConeUnderCoarseChords) {
+  Handle(Geom_ConicalSurface) cone = new Geom_ConicalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), M_PI / 4, 21);
+  auto edge = [&](const gp_Pnt2d& a, const gp_Pnt2d& b) {
+    const gp_Vec2d d(a, b);
+    return BRepBuilderAPI_MakeEdge(new Geom2d_Line(a, gp_Dir2d(d)), cone, 0, d.Magnitude()).Edge();
+  };
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(edge({0, 0}, {0.45, 0}));
+  wire.Add(edge({0.45, 0}, {1.2, 0}));
+  wire.Add(edge({1.2, 0}, {1.2, 0.6}));
+  wire.Add(edge({1.2, 0.6}, {0, 0.6}));
+  wire.Add(edge({0, 0.6}, {0, 0}));
+  ASSERT_TRUE(wire.IsDone());
+  BRepBuilderAPI_MakeFace face(cone, wire.Wire());
+  ASSERT_TRUE(face.IsDone());
+  TopoDS_Face chamfer = face.Face();
+  BRepLib::BuildCurves3d(chamfer);
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, chamfer);
+  builder.Add(both, BRepPrimAPI_MakeBox(gp_Pnt(2000, 0, 0), 1, 1, 1).Shape());
+  auto model = test::loadShape(both, "narrow cone");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  ASSERT_GE(t->lastLevel(), 3);
+  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
 }
 
 // A cone's apex row (its degenerate edge in UV) is split with every level like the base circle,

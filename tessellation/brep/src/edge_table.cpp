@@ -479,15 +479,55 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       }
       return worst;
     };
+    // Whether the triangle that reaches across a narrow face from the segment folds: where the face
+    // is narrower (in its parameter box) than the tall standing triangle, the apex lands on its far
+    // side, and a chord whose sagitta exceeds the face's width there stands edge-on or flipped
+    // (bug33398's chamfer cones: a rim 20 in radius, 0.6 wide, chords of 35 degrees).
+    auto foldsAcross = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side) {
+      const FaceUse& use = info.faces[k];
+      const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
+      const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
+      const double len = std::hypot(dx, dy);
+      if (!(len > 0)) return false;
+      // Apex(h) = mid + h * (ru, rv), h from 0 to the tall triangle's height: the largest h inside the box.
+      const double mu = 0.5 * (a.X() + b.X()), mv = 0.5 * (a.Y() + b.Y());
+      const double ru = -side * dy / len / use.scale.su, rv = side * dx / len / use.scale.sv;
+      double h = kStandingHeight * len;
+      auto limit = [&h](double m, double r, double lo, double hi) {
+        if (r > 0) h = std::min(h, (hi - m) / r);
+        if (r < 0) h = std::min(h, (lo - m) / r);
+      };
+      const double tall = h;
+      limit(mu, ru, use.scale.uMin, use.scale.uMax);
+      limit(mv, rv, use.scale.vMin, use.scale.vMax);
+      // Wide enough here; or the chord lies on the box's side (a seam, whose far side is the face's
+      // other end) or its middle is off the box.
+      if (h >= tall || !(h > 1e-9 * (std::abs(mu) + std::abs(mv) + len))) return false;
+      gp_Pnt apex, tmp;
+      gp_Vec du, dv;
+      d1(k, mu + h * ru, mv + h * rv, apex, du, dv);
+      const gp_Vec nApex = du.Crossed(dv);
+      d1(k, a.X(), a.Y(), tmp, du, dv);
+      const gp_Vec na = du.Crossed(dv);
+      d1(k, b.X(), b.Y(), tmp, du, dv);
+      const gp_Vec nb = du.Crossed(dv);
+      const double ma = na.Magnitude(), mb = nb.Magnitude(), mApex = nApex.Magnitude();
+      if (!(ma > 0 && mb > 0 && mApex > 0)) return false;
+      const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
+      const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
+      return facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude();
+    };
     // Not on planes, cylinders, cones and spheres: they bend the same way next to the boundary as
     // along it, which the normal criterion above already covers. A torus does not: beside a
     // circle on its top, the tube turns down.
     auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const Level& crit) {
       for (std::size_t k = 0; k < uses; ++k) {
-        if (!info.faces[k].scale.bendsBeside) continue;
+        const FaceScale& scale = info.faces[k].scale;
+        if (!scale.bendsBeside && !scale.cone) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
-          if (standing(k, ta, tb, pa, pb, side, crit) > 1.0) return true;
+          if (scale.bendsBeside && standing(k, ta, tb, pa, pb, side, crit) > 1.0) return true;
+          if (scale.cone && foldsAcross(k, ta, tb, pa, pb, side)) return true;
         }
       }
       return false;
