@@ -482,7 +482,11 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // Whether the triangle that reaches across a narrow face from the segment folds: where the face
     // is narrower (in its parameter box) than the tall standing triangle, the apex lands on its far
     // side, and a chord whose sagitta exceeds the face's width there stands edge-on or flipped
-    // (bug33398's chamfer cones: a rim 20 in radius, 0.6 wide, chords of 35 degrees).
+    // (bug33398's chamfer cones: a rim 20 in radius, 0.6 wide, chords of 35 degrees; the bottle's
+    // neck at coarse levels). Only where the face is clearly narrower (the apex clamped below 3/4
+    // of the tall height): a B-spline half tube whose far end the tall apex nearly reaches folds
+    // the same way under its single coarse triangle, and its interior points mend that (hammer's
+    // handle faces took 14 times the triangles when its edges were halved for it).
     auto foldsAcross = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side) {
       const FaceUse& use = info.faces[k];
       const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
@@ -502,7 +506,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       limit(mv, rv, use.scale.vMin, use.scale.vMax);
       // Wide enough here; or the chord lies on the box's side (a seam, whose far side is the face's
       // other end) or its middle is off the box.
-      if (h >= tall || !(h > 1e-9 * (std::abs(mu) + std::abs(mv) + len))) return false;
+      if (h >= 0.75 * tall || !(h > 1e-9 * (std::abs(mu) + std::abs(mv) + len))) return false;
       gp_Pnt apex, tmp;
       gp_Vec du, dv;
       d1(k, mu + h * ru, mv + h * rv, apex, du, dv);
@@ -517,17 +521,18 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
       return facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude();
     };
-    // Not on planes, cylinders, cones and spheres: they bend the same way next to the boundary as
-    // along it, which the normal criterion above already covers. A torus does not: beside a
-    // circle on its top, the tube turns down.
+    // The standing triangles not on planes, cylinders, cones and spheres: they bend the same way
+    // next to the boundary as along it, which the normal criterion above already covers. A torus
+    // does not: beside a circle on its top, the tube turns down. The narrow-face fold on every
+    // curved face.
     auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const Level& crit) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceScale& scale = info.faces[k].scale;
-        if (!scale.bendsBeside && !scale.cone) continue;
+        if (!scale.curved) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
           if (scale.bendsBeside && standing(k, ta, tb, pa, pb, side, crit) > 1.0) return true;
-          if (scale.cone && foldsAcross(k, ta, tb, pa, pb, side)) return true;
+          if (foldsAcross(k, ta, tb, pa, pb, side)) return true;
         }
       }
       return false;

@@ -40,8 +40,8 @@ class EdgeTable {
     // Tori and free-form surfaces (B-spline, Bezier, offset, swept): beside an edge the surface can
     // bend another way than along it.
     bool bendsBeside = false;
-    // A cone: narrow ones (chamfers) fold under coarse rim chords (foldsAcross in discretiseEdge).
-    bool cone = false;
+    // Not a plane: a narrow face folds under coarse chords that sag across it (foldsAcross).
+    bool curved = false;
     std::shared_ptr<const BSplineDirect> direct;  // a B-spline face's direct evaluator (immutable, shared)
   };
   // Before the first discretise(): every face's scale (from any thread, one call per face), then

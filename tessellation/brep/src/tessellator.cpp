@@ -115,7 +115,7 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
       scale.uMin = eval->uMin, scale.uMax = eval->uMax, scale.vMin = eval->vMin, scale.vMax = eval->vMax;
       const GeomAbs_SurfaceType type = eval->adaptor().GetType();
       scale.bendsBeside = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere;
-      scale.cone = type == GeomAbs_Cone;
+      scale.curved = type != GeomAbs_Plane;
       scale.direct = eval->direct();
       scale.valid = true;
       faces[f].eval = std::move(eval);
