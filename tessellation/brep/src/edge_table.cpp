@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <unordered_map>
+#include <utility>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <gp_Pnt2d.hxx>
@@ -194,8 +195,10 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::vector<Level> tolerances)
     if (!v1.IsNull()) info.p1 = BRep_Tool::Pnt(v1);
     info.closed = !v0.IsNull() && v0.IsSame(v1);
     if (!info.degenerated && !info.closed && !v0.IsNull() && !v1.IsNull()) {
-      const auto ends = std::minmax<const void*>(v0.TShape().get(), v1.TShape().get());
-      const auto [it, added] = edgeByEnds.emplace(std::make_pair(ends.first, ends.second), e);
+      const void* a = v0.TShape().get();
+      const void* b = v1.TShape().get();
+      if (std::less<const void*>()(b, a)) std::swap(a, b);
+      const auto [it, added] = edgeByEnds.emplace(std::make_pair(a, b), e);
       if (!added) info.sharesEnds = info_[it->second].sharesEnds = true;
     }
     if (info.degenerated) continue;
