@@ -76,17 +76,31 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
 
 INSTANTIATE_TEST_SUITE_P(OcctMisc, SampleModel, ::testing::ValuesIn(sampleModels()), testName);
 
+// Flip checks on single occt-misc models, each meshed at 0.1% on two threads (skipped when occt-misc
+// is not installed).
+class OcctMiscFlips : public ::testing::Test {
+ protected:
+  void mesh(const std::string& file) {
+    const std::string path = std::string(CETVIEW_OCCT_DATA) + "/" + file;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
+    LoadResult r = loadModel(path);
+    ASSERT_TRUE(r) << r.error;
+    model_ = std::move(r.model);
+    tessellator_ = Tessellator::create(*model_, test::relative(0.001)).tessellator;
+    ASSERT_TRUE(tessellator_ && tessellator_->run(2));
+  }
+  std::unique_ptr<Model> model_;  // outlives the tessellator, which refers to it
+  std::unique_ptr<Tessellator> tessellator_;
+};
+
 // The bench's flip count over a level (countFlipped: no surface measures) is the per-face measure's
 // sum: on the propeller at 0.1%, whose blade tips keep flipped triangles (near-singular corners) on
 // its coarse levels (the bottle's neck did until the edges checked the triangle reaching across
 // a narrow face).
-TEST(OcctMiscFlips, CountFlippedIsThePerFaceMeasuresSum) {
-  const std::string path = std::string(CETVIEW_OCCT_DATA) + "/occ/Propeller.rle";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
-  LoadResult r = loadModel(path);
-  ASSERT_TRUE(r) << r.error;
-  auto t = Tessellator::create(*r.model, test::relative(0.001)).tessellator;
-  ASSERT_TRUE(t && t->run(2));
+TEST_F(OcctMiscFlips, CountFlippedIsThePerFaceMeasuresSum) {
+  mesh("occ/Propeller.rle");
+  if (IsSkipped() || HasFatalFailure()) return;
+  const Tessellator* t = tessellator_.get();
   std::size_t coarse = 0;
   for (int k = 0; k <= t->lastLevel(); ++k) {
     std::size_t perFace = 0;
@@ -102,13 +116,10 @@ TEST(OcctMiscFlips, CountFlippedIsThePerFaceMeasuresSum) {
 // passed level 1's angle by a hair while every point nearer the chord failed it, so the face mesher
 // crept towards the chord and left slivers a hair inside the boundary: 100 flipped triangles on
 // each of levels 1-4 before the edges checked lower apexes too. Every level must be clean.
-TEST(OcctMiscFlips, TerrainsRimLeavesNoSlivers) {
-  const std::string path = std::string(CETVIEW_OCCT_DATA) + "/occ/terrain.brep";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
-  LoadResult r = loadModel(path);
-  ASSERT_TRUE(r) << r.error;
-  auto t = Tessellator::create(*r.model, test::relative(0.001)).tessellator;
-  ASSERT_TRUE(t && t->run(2));
+TEST_F(OcctMiscFlips, TerrainsRimLeavesNoSlivers) {
+  mesh("occ/terrain.brep");
+  if (IsSkipped() || HasFatalFailure()) return;
+  const Tessellator* t = tessellator_.get();
   ASSERT_GE(t->lastLevel(), 4);
   for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
 }

@@ -425,6 +425,36 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
           n[k] = gp_Vec(0, 0, 0);
       }
     };
+    // The segment's chord in face k's UV: its ends, its direction scaled (dx, dy: the face's scaled
+    // UV, where lengths approximate 3D ones) and that length.
+    struct UvChord {
+      gp_Pnt2d a, b;
+      double dx = 0, dy = 0, len = 0;
+    };
+    auto uvChord = [&](std::size_t k, double ta, double tb) {
+      const FaceUse& use = info.faces[k];
+      UvChord c;
+      c.a = use.pcurve->Value(pcurveParameter(info, use, ta));
+      c.b = use.pcurve->Value(pcurveParameter(info, use, tb));
+      c.dx = (c.b.X() - c.a.X()) * use.scale.su, c.dy = (c.b.Y() - c.a.Y()) * use.scale.sv;
+      c.len = std::hypot(c.dx, c.dy);
+      return c;
+    };
+    auto normalAt = [&](std::size_t k, double u, double v, gp_Pnt& p) {
+      gp_Vec du, dv;
+      d1(k, u, v, p, du, dv);
+      return du.Crossed(dv);
+    };
+    // A facet on the chord (pa, pb) with apex `apex` nearly edge-on to the surface (the face
+    // mesher's fold rule), or flipped, against its corners' normals; not decided where one has none.
+    auto folds = [&](const gp_Pnt& pa, const gp_Pnt& pb, const gp_Pnt& apex, const gp_Vec& na, const gp_Vec& nb,
+                     const gp_Vec& nApex, int side) {
+      const double ma = na.Magnitude(), mb = nb.Magnitude(), mApex = nApex.Magnitude();
+      if (!(ma > 0 && mb > 0 && mApex > 0)) return false;
+      const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
+      const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
+      return facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude();
+    };
     // How far triangles standing on the segment's UV chord miss the tolerances: the tallest (apex
     // kStandingHeight of the chord's length away, in the face's scaled UV) by the larger of its
     // centroid's sag over the chordal tolerance and its corners' normal spread over the angular
@@ -435,50 +465,35 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // put there fails the angle against the chord's ends, so its refinement crept towards the
     // chord and left slivers a hair inside the boundary. Apexes stay inside the face's parameter box.
     auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side, const Level& crit) {
-      const FaceUse& use = info.faces[k];
-      const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
-      const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
-      const double len = std::hypot(dx, dy);
-      if (!(len > 0)) return 0.0;
-      gp_Pnt tmpA, tmpB;
-      gp_Vec du, dv;
-      d1(k, a.X(), a.Y(), tmpA, du, dv);
-      const gp_Vec na = du.Crossed(dv);
-      d1(k, b.X(), b.Y(), tmpB, du, dv);
-      const gp_Vec nb = du.Crossed(dv);
-      const double ma = na.Magnitude(), mb = nb.Magnitude();
+      const FaceScale& scale = info.faces[k].scale;
+      const UvChord c = uvChord(k, ta, tb);
+      if (!(c.len > 0)) return 0.0;
+      gp_Pnt tmp;
+      const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
       double worst = 0;
       for (double height = kStandingHeight; height >= kLowestStanding; height *= 0.5) {
-        const double h = height * len * side;
-        const double au = 0.5 * (a.X() + b.X()) - h * dy / len / use.scale.su;
-        const double av = 0.5 * (a.Y() + b.Y()) + h * dx / len / use.scale.sv;
+        const double h = height * c.len * side;
+        const double au = 0.5 * (c.a.X() + c.b.X()) - h * c.dy / c.len / scale.su;
+        const double av = 0.5 * (c.a.Y() + c.b.Y()) + h * c.dx / c.len / scale.sv;
         // Outside the face's parameter box the face is narrower than the triangle: its width, not
         // this segment, limits the triangles there (the lower ones too: a narrow fillet turns
         // steadily across, and the edges on its far side set its rows).
-        if (au < use.scale.uMin || au > use.scale.uMax || av < use.scale.vMin || av > use.scale.vMax) break;
+        if (au < scale.uMin || au > scale.uMax || av < scale.vMin || av > scale.vMax) break;
         gp_Pnt apex;
-        d1(k, au, av, apex, du, dv);
-        const gp_Vec nApex = du.Crossed(dv);
+        const gp_Vec nApex = normalAt(k, au, av, apex);
         if (height == kStandingHeight) {
-          gp_Pnt c;
-          d1(k, (a.X() + b.X() + au) / 3, (a.Y() + b.Y() + av) / 3, c, du, dv);
-          const gp_Vec nc = du.Crossed(dv);
+          gp_Pnt centroid;
+          const gp_Vec nc = normalAt(k, (c.a.X() + c.b.X() + au) / 3, (c.a.Y() + c.b.Y() + av) / 3, centroid);
           if (nc.Magnitude() > 0) {
             const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
-            worst = std::max(worst, std::abs(gp_Vec(flat, c.XYZ()).Dot(nc / nc.Magnitude())) / crit.chordal);
+            worst = std::max(worst, std::abs(gp_Vec(flat, centroid.XYZ()).Dot(nc / nc.Magnitude())) / crit.chordal);
           }
         }
         worst = std::max(worst, std::max(angleBetween(na, nApex), angleBetween(nb, nApex)) / crit.angleRad);
-        // A facet nearly edge-on to the surface (the face mesher's fold rule), or flipped: the chord
-        // sags beside the segment as far as the apex reaches, so no point can stand on it. (Asked
-        // of the tall triangle only: a low one on a curved chord always tilts, and the face mesher
-        // is free to stand a taller one there.)
-        const double mApex = nApex.Magnitude();
-        if (height == kStandingHeight && ma > 0 && mb > 0 && mApex > 0) {
-          const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
-          const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
-          if (facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude()) return 2.0;
-        }
+        // Folded: the chord sags beside the segment as far as the apex reaches, so no point can
+        // stand on it. (Asked of the tall triangle only: a low one on a curved chord always tilts,
+        // and the face mesher is free to stand a taller one there.)
+        if (height == kStandingHeight && folds(pa, pb, apex, na, nb, nApex, side)) return 2.0;
         if (worst > 1.0) break;
       }
       return worst;
@@ -492,38 +507,27 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // the same way under its single coarse triangle, and its interior points mend that (hammer's
     // handle faces took 14 times the triangles when its edges were halved for it).
     auto foldsAcross = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side) {
-      const FaceUse& use = info.faces[k];
-      const gp_Pnt2d a = use.pcurve->Value(pcurveParameter(info, use, ta)), b = use.pcurve->Value(pcurveParameter(info, use, tb));
-      const double dx = (b.X() - a.X()) * use.scale.su, dy = (b.Y() - a.Y()) * use.scale.sv;
-      const double len = std::hypot(dx, dy);
-      if (!(len > 0)) return false;
+      const FaceScale& scale = info.faces[k].scale;
+      const UvChord c = uvChord(k, ta, tb);
+      if (!(c.len > 0)) return false;
       // Apex(h) = mid + h * (ru, rv), h from 0 to the tall triangle's height: the largest h inside the box.
-      const double mu = 0.5 * (a.X() + b.X()), mv = 0.5 * (a.Y() + b.Y());
-      const double ru = -side * dy / len / use.scale.su, rv = side * dx / len / use.scale.sv;
-      double h = kStandingHeight * len;
+      const double mu = 0.5 * (c.a.X() + c.b.X()), mv = 0.5 * (c.a.Y() + c.b.Y());
+      const double ru = -side * c.dy / c.len / scale.su, rv = side * c.dx / c.len / scale.sv;
+      double h = kStandingHeight * c.len;
       auto limit = [&h](double m, double r, double lo, double hi) {
         if (r > 0) h = std::min(h, (hi - m) / r);
         if (r < 0) h = std::min(h, (lo - m) / r);
       };
       const double tall = h;
-      limit(mu, ru, use.scale.uMin, use.scale.uMax);
-      limit(mv, rv, use.scale.vMin, use.scale.vMax);
+      limit(mu, ru, scale.uMin, scale.uMax);
+      limit(mv, rv, scale.vMin, scale.vMax);
       // Wide enough here; or the chord lies on the box's side (a seam, whose far side is the face's
       // other end) or its middle is off the box.
-      if (h >= 0.75 * tall || !(h > 1e-9 * (std::abs(mu) + std::abs(mv) + len))) return false;
+      if (h >= 0.75 * tall || !(h > 1e-9 * (std::abs(mu) + std::abs(mv) + c.len))) return false;
       gp_Pnt apex, tmp;
-      gp_Vec du, dv;
-      d1(k, mu + h * ru, mv + h * rv, apex, du, dv);
-      const gp_Vec nApex = du.Crossed(dv);
-      d1(k, a.X(), a.Y(), tmp, du, dv);
-      const gp_Vec na = du.Crossed(dv);
-      d1(k, b.X(), b.Y(), tmp, du, dv);
-      const gp_Vec nb = du.Crossed(dv);
-      const double ma = na.Magnitude(), mb = nb.Magnitude(), mApex = nApex.Magnitude();
-      if (!(ma > 0 && mb > 0 && mApex > 0)) return false;
-      const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, apex)) * side;
-      const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
-      return facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude();
+      const gp_Vec nApex = normalAt(k, mu + h * ru, mv + h * rv, apex);
+      const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
+      return folds(pa, pb, apex, na, nb, nApex, side);
     };
     // The standing triangles not on planes, cylinders, cones and spheres: they bend the same way
     // next to the boundary as along it, which the normal criterion above already covers. A torus

@@ -3,9 +3,10 @@
 // Level 0 builds the face domain: the loops of face_topology.h sampled at the shared edge points,
 // scaled UV, segments recovered, outside flood-filled. Each later level replaces every boundary
 // segment that its edge split by the chain of new points (Triangulator::replaceConstraint), splits
-// the rows of degenerate edges (poles, apexes) to keep pace, then refines the interior until every triangle is within the level's tolerances. Vertices are appended
-// to the FaceMesh as the triangulator creates them (output id = triangulator id + a base that only a
-// rebuild moves), so nothing is ever rebuilt per level.
+// the rows of degenerate edges (poles, apexes) to keep pace, then refines the interior until every
+// triangle is within the level's tolerances. Vertices are appended to the FaceMesh as the
+// triangulator creates them (output id = triangulator id + a base that only a rebuild moves), so
+// nothing is ever rebuilt per level.
 #pragma once
 
 #include <atomic>
