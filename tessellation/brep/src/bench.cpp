@@ -233,6 +233,10 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
         r.brepmesh_max_angle_deg = std::max(r.brepmesh_max_angle_deg, angles[f] * 180 / M_PI);
         r.brepmesh_faces_over_angle += angles[f] > angleLimit;
         r.brepmesh_degenerate += degenerate[f];
+        if (devs[f] <= r.deflection && angles[f] <= angleLimit) {
+          r.brepmesh_triangles_kept += faceSoups[f].triangleCount();
+          r.cetview_triangles_kept += q[f].triangles;
+        }
       }
       for (PartId p = 0; p < model.parts().size(); ++p) {
         if (!model.parts()[p].closed) continue;
@@ -288,6 +292,8 @@ std::string benchJson(const BenchResult& r) {
   num("cetview_degenerate", static_cast<double>(r.cetview_degenerate));
   num("cetview_flipped", static_cast<double>(r.cetview_flipped));
   num("cetview_flipped_coarse", static_cast<double>(r.cetview_flipped_coarse));
+  num("cetview_triangles_kept", static_cast<double>(r.cetview_triangles_kept));
+  num("brepmesh_triangles_kept", static_cast<double>(r.brepmesh_triangles_kept));
   num("brepmesh_degenerate", static_cast<double>(r.brepmesh_degenerate));
   num("cetview_peak_mb", r.cetview_peak_mb);
   num("brepmesh_peak_mb", r.brepmesh_peak_mb);

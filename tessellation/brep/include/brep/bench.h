@@ -43,6 +43,9 @@ struct BenchResult {
   std::size_t cetview_degenerate = 0, brepmesh_degenerate = 0;
   // cetview's flipped triangles (brep/measure.h) on the final level, and over its coarser levels.
   std::size_t cetview_flipped = 0, cetview_flipped_coarse = 0;
+  // Triangles of both meshers over the faces where BRepMesh keeps the deflection and the angle:
+  // the triangle goal on the faces where the two meet the same promise.
+  std::size_t cetview_triangles_kept = 0, brepmesh_triangles_kept = 0;
   double cetview_peak_mb = 0, brepmesh_peak_mb = 0;             // peak heap growth while meshing
   std::size_t repaired_faces = 0, fallback_faces = 0, empty_faces = 0;
 };
