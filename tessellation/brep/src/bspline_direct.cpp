@@ -165,23 +165,38 @@ void BSplineDirect::Direction::buildPower() {
   }
 }
 
+void BSplineDirect::Direction::numberSpans() {
+  // Knots of multiplicity m > 1 leave m - 1 empty spans in the flat sequence; only the others
+  // get patches (a degree-8 direction with 3 interior knots of multiplicity 7: 4 of 22).
+  patchIndex.assign(static_cast<std::size_t>(poles - degree), -1);
+  patchSpans = 0;
+  for (int s = degree; s < poles; ++s)
+    if (knots[static_cast<std::size_t>(s + 1)] > knots[static_cast<std::size_t>(s)])
+      patchIndex[static_cast<std::size_t>(s - degree)] = patchSpans++;
+}
+
 void BSplineDirect::buildPatches() {
   const int p = u_.degree, q = v_.degree;
   if (std::max(p, q) < kPatchDegree) return;
-  const std::size_t spansU = static_cast<std::size_t>(u_.poles - p), spansV = static_cast<std::size_t>(v_.poles - q);
+  u_.numberSpans();
+  v_.numberSpans();
+  const std::size_t spansU = static_cast<std::size_t>(u_.patchSpans), spansV = static_cast<std::size_t>(v_.patchSpans);
   const std::size_t perPatch = static_cast<std::size_t>(4 * (p + 1) * (q + 1));
   const std::size_t doubles = spansU * spansV * perPatch;
-  if (doubles > kPatchDoubles || doubles > kPatchRatio * poles_.size()) return;
+  if (doubles == 0 || doubles > kPatchDoubles || doubles > kPatchRatio * poles_.size()) return;
   u_.buildPower();
   v_.buildPower();
-  patches_.assign(spansU * spansV * perPatch, 0.0);
+  patches_.assign(doubles, 0.0);
   const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
   const int nu = p + 1, nv = q + 1;
-  for (std::size_t a = 0; a < spansU; ++a) {
+  for (std::size_t a = 0; a < u_.patchIndex.size(); ++a) {
+    if (u_.patchIndex[a] < 0) continue;
     const double* Au = u_.power.data() + a * static_cast<std::size_t>(nu * nu);
-    for (std::size_t b = 0; b < spansV; ++b) {
+    for (std::size_t b = 0; b < v_.patchIndex.size(); ++b) {
+      if (v_.patchIndex[b] < 0) continue;
       const double* Av = v_.power.data() + b * static_cast<std::size_t>(nv * nv);
-      double* C = patches_.data() + (a * spansV + b) * perPatch;
+      double* C = patches_.data() + (static_cast<std::size_t>(u_.patchIndex[a]) * spansV +
+                                     static_cast<std::size_t>(v_.patchIndex[b])) * perPatch;
       // C[k][l] = sum over i, j of Au[i][k] Av[j][l] P[a + i][b + j] (span a's first pole is a).
       for (int i = 0; i < nu; ++i) {
         for (int j = 0; j < nv; ++j) {
@@ -205,8 +220,9 @@ template <bool kDerivatives>
 void BSplineDirect::evaluatePatch(double u, double v, int su, int sv, double* out) const {
   const int p = u_.degree, q = v_.degree, nv = q + 1;
   const std::size_t a = static_cast<std::size_t>(su - p), b = static_cast<std::size_t>(sv - q);
-  const std::size_t spansV = static_cast<std::size_t>(v_.poles - q);
-  const double* C = patches_.data() + (a * spansV + b) * static_cast<std::size_t>(4 * (p + 1) * nv);
+  const std::size_t patch = static_cast<std::size_t>(u_.patchIndex[a]) * static_cast<std::size_t>(v_.patchSpans) +
+                            static_cast<std::size_t>(v_.patchIndex[b]);
+  const double* C = patches_.data() + patch * static_cast<std::size_t>(4 * (p + 1) * nv);
   const double hu = u_.length[a], hv = v_.length[b];
   const double x = (u - u_.mid[a]) / hu, y = (v - v_.mid[b]) / hv;
   double s[4] = {0, 0, 0, 0}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
@@ -273,8 +289,8 @@ void BSplineDirect::evaluateWithU(double u, double v, int su, int sv, double* ou
 
 template <bool kDerivatives>
 void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {
-  if (!patches_.empty() && u_.length[static_cast<std::size_t>(su - u_.degree)] > 0 &&
-      v_.length[static_cast<std::size_t>(sv - v_.degree)] > 0)
+  if (!patches_.empty() && u_.patchIndex[static_cast<std::size_t>(su - u_.degree)] >= 0 &&
+      v_.patchIndex[static_cast<std::size_t>(sv - v_.degree)] >= 0)
     return evaluatePatch<kDerivatives>(u, v, su, sv, out);
   // Degrees 1 to 3 each way (most faces of the sample models have one of them at least) with
   // their loops unrolled; others take the degree at run time.

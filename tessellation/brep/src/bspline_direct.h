@@ -67,6 +67,10 @@ class BSplineDirect {
     // about the span's midpoint, coefficient k of function j at power[(s - p) * (p+1)^2 + j (p+1) + k].
     std::vector<double> power, mid, length;  // mid, length per span (length 0: an empty span)
     void buildPower();
+    // Per span: its patch's index among the non-empty spans, -1 for an empty one (see buildPatches).
+    std::vector<int> patchIndex;
+    int patchSpans = 0;
+    void numberSpans();
   };
   BSplineDirect() = default;
   // High degrees (kPatchDegree or more either way) with few spans: each pair of spans' polynomial
@@ -80,7 +84,7 @@ class BSplineDirect {
   void buildPatches();
   template <bool kDerivatives>
   void evaluatePatch(double u, double v, int su, int sv, double* out) const;
-  std::vector<double> patches_;  // per span pair (u major): (p+1) x (q+1) coefficients of 4 doubles
+  std::vector<double> patches_;  // per non-empty span pair (u major): (p+1) x (q+1) coefficients of 4 doubles
   template <bool kDerivatives>
   void evaluate(double u, double v, int su, int sv, double* out) const;
   template <bool kDerivatives, int PU>
