@@ -5,6 +5,7 @@
 // polynomial), and with a placement (a face's location) applied to the poles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include <Geom_BSplineSurface.hxx>
@@ -111,17 +112,36 @@ TEST(BSplineDirect, MatchesOpenCascadeOnPolynomialAndRationalSurfaces) {
 // interior multiplicities. Past the parameter range a degree-8 or -11 polynomial magnifies rounding:
 // there OpenCASCADE and the basis-function evaluation differ by up to 4e-9 too, hence 1e-8. Many
 // spans of high degree would make the patches several times the poles' memory: those surfaces keep
-// the basis-function evaluation (and match OpenCASCADE there too, see PatchesCountOnlyNonEmptySpans).
+// the basis-function evaluation (and match OpenCASCADE there too). The uneven surfaces of 7 x 5
+// spans fall on either side of that bound with the degrees: each must take the path the rule
+// gives it (documentedPath), and both paths must occur.
+// The path bspline_direct.h documents: polynomial patches for degree 4 or more one way where the
+// patches of the non-empty span pairs (one per pair of distinct consecutive knots) take at most 4
+// times the poles' memory, and at most 2^18 doubles; the basis functions otherwise.
+Path documentedPath(const Handle(Geom_BSplineSurface)& s) {
+  if (std::max(s->UDegree(), s->VDegree()) < 4) return Path::kBasis;
+  const std::size_t spans = std::size_t(s->NbUKnots() - 1) * std::size_t(s->NbVKnots() - 1);
+  const std::size_t patchDoubles = spans * 4 * std::size_t(s->UDegree() + 1) * std::size_t(s->VDegree() + 1);
+  const std::size_t poleDoubles = 4 * std::size_t(s->NbUPoles()) * std::size_t(s->NbVPoles());
+  return patchDoubles <= 4 * poleDoubles && patchDoubles <= (std::size_t(1) << 18) ? Path::kPatches : Path::kBasis;
+}
+
 TEST(BSplineDirect, HighDegreePatchesMatchOpenCascade) {
   std::mt19937 rng(23);
+  int onPatches = 0, onBasis = 0;  // the uneven many-span surfaces: both paths must be covered
   for (const auto& [uDegree, vDegree] : {std::pair{2, 9}, {2, 11}, {7, 8}, {11, 2}, {4, 1}, {8, 8}}) {
     for (const bool rational : {false, true}) {
       SCOPED_TRACE(testing::Message() << "degrees " << uDegree << " x " << vDegree << (rational ? " rational" : ""));
       expectSame(randomSurface(rng, uDegree, vDegree, rational, {1}, 1, 1), rng, 1e-8, Path::kPatches);
       expectSame(randomSurface(rng, uDegree, vDegree, rational, {1, 2}, 2, 1), rng, 1e-8, Path::kPatches);
-      expectSame(randomSurface(rng, uDegree, vDegree, rational, {1, 2, 5, 1}, 7, 5), rng, 1e-8);
+      const auto uneven = randomSurface(rng, uDegree, vDegree, rational, {1, 2, 5, 1}, 7, 5);
+      const Path path = documentedPath(uneven);
+      (path == Path::kPatches ? onPatches : onBasis) += 1;
+      expectSame(uneven, rng, 1e-8, path);
     }
   }
+  EXPECT_GT(onPatches, 0);
+  EXPECT_GT(onBasis, 0);
 }
 
 // The patches' memory counts the spans that have a patch: a knot of multiplicity m leaves m - 1
