@@ -44,5 +44,28 @@ TEST(BenchKept, FacesBRepMeshMissesAreLeftOut) {
   EXPECT_LT(r.cetview_triangles_kept, r.cetview_triangles);
 }
 
+// Edges beside a B-spline fillet: the tall triangle standing on a segment may miss the angle a
+// little where the low ones keep it, so the edge is not halved for the fillet's sake (Ball's
+// cylinder took 128 segments on the edge it shares with its fillet, BRepMesh 30). Ball: no more
+// triangles than BRepMesh on the faces where BRepMesh keeps both tolerances (546 against 567; 618
+// before); bearing: no more on the whole model (12240 against 12285; 13184 before). cetview keeps
+// both tolerances on every face of both. (The rule's guards, a narrow torus along a long chord on
+// Top.brep and a terrain twisting near its boundary on MAT.brep, are held by the sample models'
+// angle checks at 1%.)
+TEST(BenchKept, FilletNeighboursTakeNoMoreThanBRepMesh) {
+  for (const char* file : {"occ/Ball.brep", "iges/bearing.iges"}) {
+    SCOPED_TRACE(file);
+    const std::string path = std::string(CETVIEW_OCCT_DATA) + "/" + file;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
+    const BenchResult r = benchModel(path, oneTenthPercent());
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    EXPECT_EQ(r.cetview_faces_over + r.cetview_faces_over_angle, 0u);
+    EXPECT_LE(r.cetview_triangles_kept, r.brepmesh_triangles_kept);
+    if (std::string(file) == "iges/bearing.iges") {
+      EXPECT_LE(r.cetview_triangles, r.brepmesh_triangles);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -60,6 +60,12 @@ constexpr double kStandingHeight = 0.5;
 // from kStandingHeight): 4 times as long as high. Down to 1/16 split edges beside fillets and gave
 // 7% more triangles over the bench.
 constexpr double kLowestStanding = 0.25;
+// Where the tall standing triangle may miss the angle (see standing() in discretiseEdge): by at
+// most this factor, by at most this angle (radians, 45 degrees), and where the surface under the
+// segment's UV chord lies within this fraction of its length from the 3D chord (hugsChord).
+constexpr double kSlenderSpread = 1.5;
+constexpr double kSlenderMaxAngle = M_PI / 4;
+constexpr double kSlenderBulge = kLowestStanding / 4;
 
 // The fewest equal segments of a circular arc (radius r, angle theta) that meet a level's criteria
 // in discretiseEdge(): the sagitta within the chordal tolerance and the tangent turn within the
@@ -455,6 +461,68 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       const gp_Vec nSum = na / ma + nb / mb + nApex / mApex;
       return facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude();
     };
+    // The perpendicular from the middle of face k's UV chord into the face (side: which way; the
+    // domain on the left of the chord times side), in the face's scaled UV: apex(h) = mid + h * (ru,
+    // rv), and h the largest height inside the face's parameter box up to the tall standing
+    // triangle's. Not inside where the chord lies on the box's side (a seam, whose far side is the
+    // face's other end) or its middle is off the box.
+    struct Reach {
+      double mu, mv, ru, rv, h, tall;
+      bool inside;
+    };
+    auto reachInto = [&](std::size_t k, const UvChord& c, int side) {
+      const FaceScale& scale = info.faces[k].scale;
+      Reach r;
+      r.mu = 0.5 * (c.a.X() + c.b.X()), r.mv = 0.5 * (c.a.Y() + c.b.Y());
+      r.ru = -side * c.dy / c.len / scale.su, r.rv = side * c.dx / c.len / scale.sv;
+      r.tall = r.h = kStandingHeight * c.len;
+      auto limit = [&r](double m, double d, double lo, double hi) {
+        if (d > 0) r.h = std::min(r.h, (hi - m) / d);
+        if (d < 0) r.h = std::min(r.h, (lo - m) / d);
+      };
+      limit(r.mu, r.ru, scale.uMin, scale.uMax);
+      limit(r.mv, r.rv, scale.vMin, scale.vMax);
+      r.inside = r.h > 1e-9 * (std::abs(r.mu) + std::abs(r.mv) + c.len);
+      return r;
+    };
+    // Whether every curved face on the segment stays near its chord (the slender triangles'
+    // condition in standing()): the surface under each face's UV chord lies within kSlenderBulge of
+    // the chord's length from the 3D chord, and where the face is narrower than half the chord,
+    // within twice that of its width there (3D distance from the chord's middle to the far side of
+    // the face's parameter box). A narrow fillet along a long chord turns across its width within
+    // the chord's sag: Top.brep's tori of radius 1 on arcs of radius 92 (chords of 20 sagging 0.56
+    // at 1%) kept 23 degrees, every point across them inside the chord's clearance.
+    auto hugsChord = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
+      const gp_Pnt mid(0.5 * (pa.XYZ() + pb.XYZ()));
+      for (std::size_t k = 0; k < uses; ++k) {
+        if (!info.faces[k].scale.curved) continue;
+        const UvChord c = uvChord(k, ta, tb);
+        if (!(c.len > 0)) continue;
+        double room = 0.5 * pa.Distance(pb);  // in 3D (the scaled UV may stretch one way 1000:1)
+        for (int side : {-1, 1}) {
+          if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
+          const Reach r = reachInto(k, c, side);
+          if (!r.inside) continue;
+          gp_Pnt across;
+          normalAt(k, r.mu + r.h * r.ru, r.mv + r.h * r.rv, across);
+          room = std::min(room, mid.Distance(across));
+        }
+        gp_Pnt under;
+        normalAt(k, 0.5 * (c.a.X() + c.b.X()), 0.5 * (c.a.Y() + c.b.Y()), under);
+        if (!(under.Distance(mid) < kSlenderBulge * 2 * room)) return false;
+      }
+      return true;
+    };
+    // The apex of a triangle standing on face k's UV chord c: above the point at fraction f of the
+    // chord, height times its length away (side: which way), in the face's scaled UV. False
+    // outside the face's parameter box.
+    auto apexAt = [&](std::size_t k, const UvChord& c, double f, double height, int side, double& au, double& av) {
+      const FaceScale& scale = info.faces[k].scale;
+      const double h = height * c.len * side;
+      au = c.a.X() + f * (c.b.X() - c.a.X()) - h * c.dy / c.len / scale.su;
+      av = c.a.Y() + f * (c.b.Y() - c.a.Y()) + h * c.dx / c.len / scale.sv;
+      return au >= scale.uMin && au <= scale.uMax && av >= scale.vMin && av <= scale.vMax;
+    };
     // How far triangles standing on the segment's UV chord miss the tolerances: the tallest (apex
     // kStandingHeight of the chord's length away, in the face's scaled UV) by the larger of its
     // centroid's sag over the chordal tolerance and its corners' normal spread over the angular
@@ -464,23 +532,36 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // tall triangle's apex lies past the strip and passes, but every point the face mesher can
     // put there fails the angle against the chord's ends, so its refinement crept towards the
     // chord and left slivers a hair inside the boundary. Apexes stay inside the face's parameter box.
+    //
+    // The tall triangle may miss the angle a little (kSlenderSpread) where the low ones keep it: a
+    // face turning steadily across its edge (a fillet beside it) then gets slender triangles along
+    // the edge rather than the edge halved until the tall one stands (Ball's cylinder took 128
+    // segments for the B-spline fillet beside it; bearing.iges 13184 -> 12240 triangles against
+    // BRepMesh's 12285). The face mesher must be able to put its points that near: only where every
+    // curved face hugs the chord (hugsChord), so that the clearance the mesher keeps from it
+    // (FaceMesher::buildChords) stays below the low apexes. Without that bound Propeller's blade
+    // tips folded at 1/4 (1582 flipped triangles on a level); without the absolute bound, a level-0
+    // strip of MAT.brep turning 90 degrees folded.
     auto standing = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side, const Level& crit) {
-      const FaceScale& scale = info.faces[k].scale;
       const UvChord c = uvChord(k, ta, tb);
       if (!(c.len > 0)) return 0.0;
       gp_Pnt tmp;
       const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
-      double worst = 0;
+      gp_Vec nApex;
+      auto spreadAt = [&](double au, double av, gp_Pnt& apex) {
+        nApex = normalAt(k, au, av, apex);
+        return std::max(angleBetween(na, nApex), angleBetween(nb, nApex)) / crit.angleRad;
+      };
+      double worst = 0, tallSpread = 0;
+      bool lowest = false;  // whether the lowest triangle was checked (its apex inside the box)
       for (double height = kStandingHeight; height >= kLowestStanding; height *= 0.5) {
-        const double h = height * c.len * side;
-        const double au = 0.5 * (c.a.X() + c.b.X()) - h * c.dy / c.len / scale.su;
-        const double av = 0.5 * (c.a.Y() + c.b.Y()) + h * c.dx / c.len / scale.sv;
+        double au = 0, av = 0;
         // Outside the face's parameter box the face is narrower than the triangle: its width, not
         // this segment, limits the triangles there (the lower ones too: a narrow fillet turns
         // steadily across, and the edges on its far side set its rows).
-        if (au < scale.uMin || au > scale.uMax || av < scale.vMin || av > scale.vMax) break;
+        if (!apexAt(k, c, 0.5, height, side, au, av)) break;
         gp_Pnt apex;
-        const gp_Vec nApex = normalAt(k, au, av, apex);
+        const double spread = spreadAt(au, av, apex);
         if (height == kStandingHeight) {
           gp_Pnt centroid;
           const gp_Vec nc = normalAt(k, (c.a.X() + c.b.X() + au) / 3, (c.a.Y() + c.b.Y() + av) / 3, centroid);
@@ -488,15 +569,34 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
             const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
             worst = std::max(worst, std::abs(gp_Vec(flat, centroid.XYZ()).Dot(nc / nc.Magnitude())) / crit.chordal);
           }
+          // Folded: the chord sags beside the segment as far as the apex reaches, so no point can
+          // stand on it. (Asked of the tall triangle only: a low one on a curved chord always
+          // tilts, and the face mesher is free to stand a taller one there.)
+          if (folds(pa, pb, apex, na, nb, nApex, side)) return 2.0;
+          if (worst > 1.0) break;
+          tallSpread = spread;
+          continue;
         }
-        worst = std::max(worst, std::max(angleBetween(na, nApex), angleBetween(nb, nApex)) / crit.angleRad);
-        // Folded: the chord sags beside the segment as far as the apex reaches, so no point can
-        // stand on it. (Asked of the tall triangle only: a low one on a curved chord always tilts,
-        // and the face mesher is free to stand a taller one there.)
-        if (height == kStandingHeight && folds(pa, pb, apex, na, nb, nApex, side)) return 2.0;
+        worst = std::max(worst, spread);
+        lowest = height * 0.5 < kLowestStanding;
         if (worst > 1.0) break;
       }
-      return worst;
+      if (tallSpread <= 1.0 || worst > 1.0) return std::max(worst, tallSpread);
+      // The tall triangle misses the angle: slender ones instead, where the surface turns steadily
+      // beside the whole chord: the low triangles keep the angle over its quarters as well as its
+      // middle, and at half their height (MAT.brep's terrain twists 50 degrees within 5 units of
+      // a chord 20 long, near its end: slivers there kept 36 degrees), and every curved face on
+      // the segment hugs its chord.
+      if (!lowest || tallSpread > kSlenderSpread || tallSpread * crit.angleRad > kSlenderMaxAngle) return tallSpread;
+      for (const double height : {kLowestStanding, 0.5 * kLowestStanding}) {
+        for (const double f : {0.25, 0.5, 0.75}) {
+          double au = 0, av = 0;
+          gp_Pnt apex;
+          if (height == kLowestStanding && f == 0.5) continue;  // checked above
+          if (apexAt(k, c, f, height, side, au, av) && spreadAt(au, av, apex) > 1.0) return tallSpread;
+        }
+      }
+      return hugsChord(ta, tb, pa, pb) ? worst : tallSpread;
     };
     // Whether the triangle that reaches across a narrow face from the segment folds: where the face
     // is narrower (in its parameter box) than the tall standing triangle, the apex lands on its far
@@ -507,25 +607,14 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // the same way under its single coarse triangle, and its interior points mend that (hammer's
     // handle faces took 14 times the triangles when its edges were halved for it).
     auto foldsAcross = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, int side) {
-      const FaceScale& scale = info.faces[k].scale;
       const UvChord c = uvChord(k, ta, tb);
       if (!(c.len > 0)) return false;
-      // Apex(h) = mid + h * (ru, rv), h from 0 to the tall triangle's height: the largest h inside the box.
-      const double mu = 0.5 * (c.a.X() + c.b.X()), mv = 0.5 * (c.a.Y() + c.b.Y());
-      const double ru = -side * c.dy / c.len / scale.su, rv = side * c.dx / c.len / scale.sv;
-      double h = kStandingHeight * c.len;
-      auto limit = [&h](double m, double r, double lo, double hi) {
-        if (r > 0) h = std::min(h, (hi - m) / r);
-        if (r < 0) h = std::min(h, (lo - m) / r);
-      };
-      const double tall = h;
-      limit(mu, ru, scale.uMin, scale.uMax);
-      limit(mv, rv, scale.vMin, scale.vMax);
+      const Reach r = reachInto(k, c, side);
       // Wide enough here; or the chord lies on the box's side (a seam, whose far side is the face's
       // other end) or its middle is off the box.
-      if (h >= 0.75 * tall || !(h > 1e-9 * (std::abs(mu) + std::abs(mv) + c.len))) return false;
+      if (r.h >= 0.75 * r.tall || !r.inside) return false;
       gp_Pnt apex, tmp;
-      const gp_Vec nApex = normalAt(k, mu + h * ru, mv + h * rv, apex);
+      const gp_Vec nApex = normalAt(k, r.mu + r.h * r.ru, r.mv + r.h * r.rv, apex);
       const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
       return folds(pa, pb, apex, na, nb, nApex, side);
     };
