@@ -124,5 +124,17 @@ TEST_F(OcctMiscFlips, TerrainsRimLeavesNoSlivers) {
   for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
 }
 
+// occ/Bottom.brep at 0.1%: two corner blends (B-spline patches pinched to a side 0.47 long) bend
+// sharply at level 0 (2.8 wide there): a triangle fanning from the pinched corner stood flipped, its
+// centroid and edge midpoints all inside a neighbouring chord's clearance. A flipped triangle's
+// split now slides along the edge it bisects and may stand inside the clearance where its facet on
+// the chord faces the surface's way, as a split for the angle may. Every level must be clean.
+TEST_F(OcctMiscFlips, CornerBlendsAreNotFlippedOnCoarseLevels) {
+  mesh("occ/Bottom.brep");
+  if (IsSkipped() || HasFatalFailure()) return;
+  const Tessellator* t = tessellator_.get();
+  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -730,7 +730,7 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
   }
 }
 
-bool FaceMesher::clearOfChords(double u, double v, bool forAngle) const {
+bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
   if (chords_.empty()) return true;
   const cet::Point2 q = scaled(u, v);
   const int i = static_cast<int>((q.x - gridX0_) / gridCellX_), j = static_cast<int>((q.y - gridY0_) / gridCellY_);
@@ -747,7 +747,7 @@ bool FaceMesher::clearOfChords(double u, double v, bool forAngle) const {
     if (!evaluated) x = eval_.point(u, v), evaluated = true;
     const gp_Vec facet = c.ab.Crossed(gp_Vec(c.a, x));
     if (facet.Dot(c.n) >= c.clearance * c.ab.Magnitude()) continue;
-    if (forAngle) {
+    if (mayStand) {
       // Inside the clearance, a point that fixes the angle may still stand on the chord if the
       // facet it makes with it faces the surface's way within 60 degrees (the fold rule's 70, with
       // a margin). Without it, edges from the boundary into tori and free-form faces kept up to
@@ -771,10 +771,16 @@ bool FaceMesher::clearOfChords(double u, double v, bool forAngle) const {
 bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint, bool forAngle,
                            int angleEdge) const {
   if (clearOfChords(u, v, forAngle)) return true;
+  // A flipped triangle's split slides along the edge it bisects as one for the angle does, and may
+  // stand inside a chord's clearance on the same terms (the facet it makes with the chord faces the
+  // surface's way): on faces bending sharply at a coarse level (corner blends of Bottom and trj4 at
+  // level 0) the triangle's centroid and midpoints all lay inside a neighbouring chord's clearance.
+  const bool mayStand = forAngle || anyPoint;
   const cet::CetMesh& m = cdt_->mesh();
-  if (forAngle && angleEdge >= 0) {
-    // Off the middle of the edge whose ends' normals differ too much: any point between the
-    // middle thirds or so brings both parts within the angle (the normal turns about evenly).
+  if (mayStand && angleEdge >= 0) {
+    // Off the middle of the edge being split: for the angle, the edge whose ends' normals differ
+    // too much, where any point between the middle thirds or so brings both parts within the angle
+    // (the normal turns about evenly); for a flipped triangle, the edge it is bisected on.
     const std::size_t oa = base_ + m.vertex(t, (angleEdge + 1) % 3), ob = base_ + m.vertex(t, (angleEdge + 2) % 3);
     const double eu[2] = {mesh.uv[2 * oa], mesh.uv[2 * ob]}, ev[2] = {mesh.uv[2 * oa + 1], mesh.uv[2 * ob + 1]};
     for (double f : {0.65, 0.35, 0.8, 0.2}) {

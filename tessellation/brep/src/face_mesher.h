@@ -127,15 +127,16 @@ class FaceMesher {
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
   // towards the opposite corner when needed; false when no safe point was found. A split for the
-  // angle (forAngle; angleEdge the edge to split, -1 for none) may also slide along that edge, and
-  // may come closer to a chord (see clearOfChords).
+  // angle (forAngle; angleEdge the edge to split, -1 for none) or of a flipped triangle (anyPoint;
+  // angleEdge the edge it is bisected on) may also slide along that edge, and there come closer to a
+  // chord (see clearOfChords).
   bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint, bool forAngle,
                  int angleEdge) const;
   void buildChords(const FaceMesh& mesh);
-  // Whether (u, v) keeps every nearby chord's clearance. forAngle: within a clearance, also a point
+  // Whether (u, v) keeps every nearby chord's clearance. mayStand: within a clearance, also a point
   // whose facet on the chord would face the surface's way (the clearance is cautious: it guards
   // points that split for the chordal tolerance or a fold, which come back until they find room).
-  bool clearOfChords(double u, double v, bool forAngle) const;
+  bool clearOfChords(double u, double v, bool mayStand) const;
 
   // A boundary chord (a constrained edge, domain on its left) and the clearance points must keep.
   struct Chord {
