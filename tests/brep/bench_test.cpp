@@ -1,9 +1,11 @@
 // cetview bench's triangle account over the faces where BRepMesh keeps its promise: on a box every
 // face is kept and the account is the whole mesh; on occt-misc's fuse, where BRepMesh misses the
-// deflection on some faces (up to 14x), those faces are left out of both sides.
+// deflection on some faces (up to 14x), those faces are left out of both sides. And the triangle
+// goal on the occt-misc models where a rule of the edges or the refinement brought it in reach.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
@@ -21,6 +23,16 @@ BenchOptions oneTenthPercent() {
   return options;
 }
 
+// The bench at 0.1% on an occt-misc sample model (a path under its data folder); none when
+// occt-misc is not installed.
+std::optional<BenchResult> benchSample(const std::string& file) {
+  const std::string path = std::string(CETVIEW_OCCT_DATA) + "/" + file;
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return benchModel(path, oneTenthPercent());
+}
+#define SKIP_WITHOUT_SAMPLES(r) \
+  if (!(r)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA
+
 TEST(BenchKept, EveryFaceOfABoxIsKept) {
   const std::string path = test::tempPath("box.brep");
   ASSERT_TRUE(BRepTools::Write(BRepPrimAPI_MakeBox(10, 20, 30).Shape(), path.c_str()));
@@ -33,9 +45,9 @@ TEST(BenchKept, EveryFaceOfABoxIsKept) {
 }
 
 TEST(BenchKept, FacesBRepMeshMissesAreLeftOut) {
-  const std::string path = std::string(CETVIEW_OCCT_DATA) + "/occ/fuse.brep";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
-  const BenchResult r = benchModel(path, oneTenthPercent());
+  const std::optional<BenchResult> sample = benchSample("occ/fuse.brep");
+  SKIP_WITHOUT_SAMPLES(sample);
+  const BenchResult& r = *sample;
   ASSERT_TRUE(r.error.empty()) << r.error;
   ASSERT_GT(r.brepmesh_faces_over, 0u);
   EXPECT_GT(r.brepmesh_triangles_kept, 0u);
@@ -55,9 +67,9 @@ TEST(BenchKept, FacesBRepMeshMissesAreLeftOut) {
 TEST(BenchKept, FilletNeighboursTakeNoMoreThanBRepMesh) {
   for (const char* file : {"occ/Ball.brep", "iges/bearing.iges"}) {
     SCOPED_TRACE(file);
-    const std::string path = std::string(CETVIEW_OCCT_DATA) + "/" + file;
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
-    const BenchResult r = benchModel(path, oneTenthPercent());
+    const std::optional<BenchResult> sample = benchSample(file);
+    SKIP_WITHOUT_SAMPLES(sample);
+    const BenchResult& r = *sample;
     ASSERT_TRUE(r.error.empty()) << r.error;
     EXPECT_EQ(r.cetview_faces_over + r.cetview_faces_over_angle, 0u);
     EXPECT_LE(r.cetview_triangles_kept, r.brepmesh_triangles_kept);
@@ -71,9 +83,9 @@ TEST(BenchKept, FilletNeighboursTakeNoMoreThanBRepMesh) {
 // CylinderHead (a block with a hemispherical dome in two lunes, BRepMesh within both tolerances on
 // every face) took 1172 triangles against BRepMesh's 1164 with centroid splits and halved circles.
 TEST(BenchKept, SpheresTakeNoMoreThanBRepMesh) {
-  const std::string path = std::string(CETVIEW_OCCT_DATA) + "/occ/CylinderHead.rle";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
-  const BenchResult r = benchModel(path, oneTenthPercent());
+  const std::optional<BenchResult> sample = benchSample("occ/CylinderHead.rle");
+  SKIP_WITHOUT_SAMPLES(sample);
+  const BenchResult& r = *sample;
   ASSERT_TRUE(r.error.empty()) << r.error;
   EXPECT_EQ(r.brepmesh_faces_over + r.brepmesh_faces_over_angle, 0u);  // the same tolerances kept
   EXPECT_EQ(r.cetview_faces_over + r.cetview_faces_over_angle, 0u);
