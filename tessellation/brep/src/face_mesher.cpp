@@ -51,18 +51,28 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 // location walk can cycle for ever.
 bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && cet::supportedCoordinate(p.y); }
 
-// The barycentric coordinates of the circumcentre of triangle (a, b, c); false unless it lies strictly
-// inside (not for an obtuse or right corner: a right triangle's is the middle of its long side,
-// which may be a boundary chord) or where the triangle has no area.
-bool circumcentreInside(const cet::Point2& a, const cet::Point2& b, const cet::Point2& c, double w[3]) {
-  const double la = (b.x - c.x) * (b.x - c.x) + (b.y - c.y) * (b.y - c.y);  // squared, opposite each corner
-  const double lb = (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y);
-  const double lc = (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
-  w[0] = la * (lb + lc - la), w[1] = lb * (lc + la - lb), w[2] = lc * (la + lb - lc);
-  const double sum = w[0] + w[1] + w[2];
-  if (!(sum > 0)) return false;
-  for (int i = 0; i < 3; ++i) w[i] /= sum;
-  return w[0] > 0 && w[1] > 0 && w[2] > 0;
+// Where to split a triangle that lies too far from an analytic surface inside (p: its corners in
+// scaled UV; chord: whether each edge, opposite the corner of the same index, is a boundary chord):
+// the barycentric weights of its circumcentre where that lies strictly inside it, as Delaunay
+// refinement does; else (an obtuse or right corner) of the middle of its longest edge unless that
+// is a boundary chord (Rivara's bisection); else of its centroid. The deviation of such a triangle
+// grows with its size, and the first two leave the new triangles better shaped than the centroid
+// would: fewer points for the same tolerance (CylinderHead 1172 -> 1140 triangles, fuse 996 -> 908,
+// Pump_TopCover 5014 -> 4910).
+void analyticSplitWeights(const cet::Point2 p[3], const bool chord[3], double b[3]) {
+  double squared[3];  // edge i's length squared, opposite corner i
+  for (int i = 0; i < 3; ++i) {
+    const cet::Point2 a = p[(i + 1) % 3], c = p[(i + 2) % 3];
+    squared[i] = (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y);
+  }
+  double w[3], sum = 0;
+  for (int i = 0; i < 3; ++i) sum += w[i] = squared[i] * (squared[(i + 1) % 3] + squared[(i + 2) % 3] - squared[i]);
+  if (sum > 0 && w[0] > 0 && w[1] > 0 && w[2] > 0) {
+    for (int i = 0; i < 3; ++i) b[i] = w[i] / sum;
+    return;
+  }
+  const int longest = squared[0] >= squared[1] ? (squared[0] >= squared[2] ? 0 : 2) : (squared[1] >= squared[2] ? 1 : 2);
+  for (int i = 0; i < 3; ++i) b[i] = chord[longest] ? 1.0 / 3 : (i == longest ? 0 : 0.5);
 }
 
 }  // namespace
@@ -949,27 +959,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
-      // Too far from an analytic surface inside: split at the circumcentre (in scaled UV) where it
-      // lies inside, as Delaunay refinement does, else (an obtuse triangle) at the middle of the
-      // longest edge unless that is a boundary chord (Rivara's bisection). The deviation of such a
-      // triangle grows with its size, and these points leave the new triangles better shaped than
-      // the centroid would: fewer points for the same tolerance (CylinderHead 1172 -> 1140
-      // triangles, fuse 996 -> 908, Pump_TopCover 5014 -> 4910).
-      if (at == 0 && forDeviation && exactDeviation_) {
+      if (at == 0 && forDeviation && exactDeviation_) {  // inside, too far from an analytic surface
         const cet::Point2 p[3] = {cdt_->point(m.vertex(t, 0)), cdt_->point(m.vertex(t, 1)), cdt_->point(m.vertex(t, 2))};
-        double w[3];
-        if (circumcentreInside(p[0], p[1], p[2], w)) {
-          b[0] = w[0], b[1] = w[1], b[2] = w[2];
-        } else {
-          int longestEdge = 0;
-          double longest = -1;
-          for (int i = 0; i < 3; ++i) {
-            const cet::Point2 a = p[(i + 1) % 3], c = p[(i + 2) % 3];
-            const double squared = (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y);
-            if (squared > longest) longest = squared, longestEdge = i;
-          }
-          if (!m.isConstrained(t, longestEdge)) b[0] = b[1] = b[2] = 0.5, b[longestEdge] = 0;
-        }
+        const bool chord[3] = {m.isConstrained(t, 0), m.isConstrained(t, 1), m.isConstrained(t, 2)};
+        analyticSplitWeights(p, chord, b);
       }
       double cu[3], cv[3];
       for (int i = 0; i < 3; ++i) {
