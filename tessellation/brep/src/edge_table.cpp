@@ -256,7 +256,8 @@ bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>*
 // chamfer's rim, a dome's foot). Beside a torus's tube and on free-form faces the halving's counts
 // stay: other counts left flipped triangles on a torus's coarse levels (Axis_of_bearing). Spheres
 // took more triangles with equal counts while their refinement split at centroids (CylinderHead
-// 1172 -> 1216); with circumcentres, fewer (1150 -> 1144, nist_ctc_02 -1.6%).
+// 1172 -> 1216); since it splits at circumcentres (split_point.h), fewer (CylinderHead 1152 ->
+// 1146, nist_ctc_02 19052 -> 18734 at 0.1%).
 bool EdgeTable::onArcSurfaces(const std::vector<FaceUse>& uses) {
   for (const FaceUse& use : uses) {
     const GeomAbs_SurfaceType type = BRepAdaptor_Surface(use.face, Standard_False).GetType();

@@ -26,6 +26,7 @@
 #include "brepmesh_fallback.h"
 #include "edge_table.h"
 #include "facet_rules.h"
+#include "split_point.h"
 #include "work_sharing.h"
 
 namespace cetview::brep {
@@ -50,30 +51,6 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 // magnitudes in [1e-50, 1e50]. Outside it an orientation test can contradict another, and a point
 // location walk can cycle for ever.
 bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && cet::supportedCoordinate(p.y); }
-
-// Where to split a triangle that lies too far from an analytic surface inside (p: its corners in
-// scaled UV; chord: whether each edge, opposite the corner of the same index, is a boundary chord):
-// the barycentric weights of its circumcentre where that lies strictly inside it, as Delaunay
-// refinement does; else (an obtuse or right corner) of the middle of its longest edge unless that
-// is a boundary chord (Rivara's bisection); else of its centroid. The deviation of such a triangle
-// grows with its size, and the first two leave the new triangles better shaped than the centroid
-// would: fewer points for the same tolerance (CylinderHead 1172 -> 1140 triangles, fuse 996 -> 908,
-// Pump_TopCover 5014 -> 4910).
-void analyticSplitWeights(const cet::Point2 p[3], const bool chord[3], double b[3]) {
-  double squared[3];  // edge i's length squared, opposite corner i
-  for (int i = 0; i < 3; ++i) {
-    const cet::Point2 a = p[(i + 1) % 3], c = p[(i + 2) % 3];
-    squared[i] = (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y);
-  }
-  double w[3], sum = 0;
-  for (int i = 0; i < 3; ++i) sum += w[i] = squared[i] * (squared[(i + 1) % 3] + squared[(i + 2) % 3] - squared[i]);
-  if (sum > 0 && w[0] > 0 && w[1] > 0 && w[2] > 0) {
-    for (int i = 0; i < 3; ++i) b[i] = w[i] / sum;
-    return;
-  }
-  const int longest = squared[0] >= squared[1] ? (squared[0] >= squared[2] ? 0 : 2) : (squared[1] >= squared[2] ? 1 : 2);
-  for (int i = 0; i < 3; ++i) b[i] = chord[longest] ? 1.0 / 3 : (i == longest ? 0 : 0.5);
-}
 
 }  // namespace
 
@@ -758,10 +735,10 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
     const gp_Vec facet = c.ab.Crossed(gp_Vec(c.a, x));
     if (facet.Dot(c.n) >= c.clearance * c.ab.Magnitude()) continue;
     if (mayStand) {
-      // Inside the clearance, a point that fixes the angle may still stand on the chord if the
-      // facet it makes with it faces the surface's way within 60 degrees (the fold rule's 70, with
-      // a margin). Without it, edges from the boundary into tori and free-form faces kept up to
-      // 50 degrees on the sample models.
+      // Inside the clearance, a point that fixes the angle (or a flipped triangle, sliding along the
+      // edge it is bisected on) may still stand on the chord if the facet it makes with it faces
+      // the surface's way within 60 degrees (the fold rule's 70, with a margin). Without it, edges
+      // from the boundary into tori and free-form faces kept up to 50 degrees on the sample models.
       gp_Pnt p;
       gp_Dir n;
       if (eval_.pointNormal(u, v, p, n)) {
@@ -959,7 +936,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
       if (at > 0) b[0] = b[1] = b[2] = 0.5, b[at - 1] = 0;
-      if (at == 0 && forDeviation && exactDeviation_) {  // inside, too far from an analytic surface
+      if (at == 0 && forDeviation && exactDeviation_) {  // inside, too far from an analytic surface (split_point.h)
         const cet::Point2 p[3] = {cdt_->point(m.vertex(t, 0)), cdt_->point(m.vertex(t, 1)), cdt_->point(m.vertex(t, 2))};
         const bool chord[3] = {m.isConstrained(t, 0), m.isConstrained(t, 1), m.isConstrained(t, 2)};
         analyticSplitWeights(p, chord, b);
