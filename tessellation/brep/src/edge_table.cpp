@@ -66,6 +66,11 @@ constexpr double kLowestStanding = 0.25;
 constexpr double kSlenderSpread = 1.5;
 constexpr double kSlenderMaxAngle = M_PI / 4;
 constexpr double kSlenderBulge = kLowestStanding / 4;
+// How far behind a segment's chord (a fraction of its length, in the plane of its mean normal) the
+// face may reach before the segment is halved (curlsBehind in discretiseEdge): past rounding noise
+// on flat strips (1e-15) and CrankArm's pinched B-spline corner (0.002), below the curled corner
+// blends of Top and trj4 (0.037).
+constexpr double kCurlBehind = 1.0 / 64;
 
 // The fewest equal segments of a circular arc (radius r, angle theta) that meet a level's criteria
 // in discretiseEdge(): the sagitta within the chordal tolerance and the tangent turn within the
@@ -420,6 +425,10 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         surfaces[k].D1(u, v, p, du, dv);
       }
     };
+    auto pointOn = [&](std::size_t k, double u, double v) {
+      if (const BSplineDirect* direct = info.faces[k].scale.direct.get()) return direct->value(u, v);
+      return surfaces[k].Value(u, v);
+    };
     auto normalsAt = [&](double t, gp_Vec* n) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceUse& use = info.faces[k];
@@ -472,10 +481,10 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       double mu, mv, ru, rv, h, tall;
       bool inside;
     };
-    auto reachInto = [&](std::size_t k, const UvChord& c, int side) {
+    auto reachInto = [&](std::size_t k, const UvChord& c, int side, double f = 0.5) {
       const FaceScale& scale = info.faces[k].scale;
       Reach r;
-      r.mu = 0.5 * (c.a.X() + c.b.X()), r.mv = 0.5 * (c.a.Y() + c.b.Y());
+      r.mu = c.a.X() + f * (c.b.X() - c.a.X()), r.mv = c.a.Y() + f * (c.b.Y() - c.a.Y());
       r.ru = -side * c.dy / c.len / scale.su, r.rv = side * c.dx / c.len / scale.sv;
       r.tall = r.h = kStandingHeight * c.len;
       auto limit = [&r](double m, double d, double lo, double hi) {
@@ -620,11 +629,36 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
       return folds(pa, pb, apex, na, nb, nApex, side);
     };
+    // Whether face k curls back behind the segment across its width: the point reaching into it
+    // from a quarter, the middle or three quarters of the chord (as far as the tall standing
+    // triangle's apex, or the far side of the face's parameter box) lies behind the 3D chord, more
+    // than kCurlBehind of its length, in the plane of the chord's mean normal. No point of such a
+    // face can stand on the chord clear of it (FaceMesher::buildChords): Top's and trj4's corner
+    // blends, B-spline patches pinched to a side 0.47 long and 2.8 wide at level 0, kept a flipped
+    // triangle fanning from the pinched corner, every split point of it behind a chord 3.1 long.
+    // na, nb: the surface normals at the segment's ends.
+    auto curlsBehind = [&](std::size_t k, double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const gp_Vec& na,
+                           const gp_Vec& nb, int side) {
+      const double ma = na.Magnitude(), mb = nb.Magnitude();
+      if (!(ma > 0 && mb > 0)) return false;
+      const gp_Vec n = na / ma + nb / mb;
+      const UvChord c = uvChord(k, ta, tb);
+      if (!(c.len > 0) || !(n.Magnitude() > 0)) return false;
+      const gp_Vec ab(pa, pb);
+      for (double f : {0.25, 0.5, 0.75}) {
+        const Reach r = reachInto(k, c, side, f);
+        if (!r.inside) continue;
+        const gp_Pnt across = pointOn(k, r.mu + r.h * r.ru, r.mv + r.h * r.rv);
+        if (ab.Crossed(gp_Vec(pa, across)).Dot(n) * side < -kCurlBehind * ab.SquareMagnitude() * n.Magnitude()) return true;
+      }
+      return false;
+    };
     // The standing triangles not on planes, cylinders, cones and spheres: they bend the same way
     // next to the boundary as along it, which the normal criterion above already covers. A torus
     // does not: beside a circle on its top, the tube turns down. The narrow-face fold on every
     // curved face.
-    auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const Level& crit) {
+    auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const gp_Vec* na, const gp_Vec* nb,
+                             const Level& crit) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceScale& scale = info.faces[k].scale;
         if (!scale.curved) continue;
@@ -632,6 +666,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
           if (scale.bendsBeside && standing(k, ta, tb, pa, pb, side, crit) > 1.0) return true;
           if (foldsAcross(k, ta, tb, pa, pb, side)) return true;
+          if (scale.bendsBeside && curlsBehind(k, ta, tb, pa, pb, na[k], nb[k], side)) return true;
         }
       }
       return false;
@@ -661,7 +696,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       if (!(chord > minSize)) return false;
       for (std::size_t k = 0; k < uses; ++k)
         if (angleBetween(s.na[k], s.nb[k]) > crit.angleRad) return true;
-      return standingFails(s.ta, s.tb, s.pa, s.pb, crit);
+      return standingFails(s.ta, s.tb, s.pa, s.pb, s.na, s.nb, crit);
     };
     auto itemAt = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
       Item s{ta, tb, pa, pb, {}, {}, {}, {}, 0};
