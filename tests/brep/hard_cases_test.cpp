@@ -234,6 +234,28 @@ TEST(HardCases, HolesByTheRimOfACoarseCircle) {
   }
 }
 
+TEST(HardCases, ASphereSmallerThanTheCoarseLevelsTolerance) {
+  // A sphere of radius 1.9 beside a block 300 long: at 0.1% the coarse levels' tolerances exceed
+  // the sphere's diameter, so nothing inside it asks for a point, and the Delaunay triangles of its
+  // boundary (the seam twice, the poles) joined its two seam lines directly: each collapsed across
+  // the seam and was dropped, and the face had no triangle left (OpenCASCADE's mesh stood in for
+  // it, the same on every level). A triangle spanning the seam is split whatever the tolerance.
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, BRepPrimAPI_MakeBox(300, 20, 20).Shape());
+  builder.Add(both, BRepPrimAPI_MakeSphere(gp_Pnt(150, 50, 10), 1.9).Shape());
+  auto model = test::loadShape(both, "small_sphere");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  ASSERT_GT(t->schedule().front().chordal, 2 * 1.9);
+  for (FaceId f = 0; f < model->faces().size(); ++f) {
+    EXPECT_EQ(t->report(f).status, FaceStatus::kOk) << "face " << f << ": " << t->report(f).reason;
+    for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_GT(t->triangleCount(k), 0u);
+  }
+}
+
 TEST(HardCases, VeryThinFaces) {
   // A 100 x 0.01 x 20 slab (faces narrower than the deflection) and a 0.002 rad slice of a cylinder.
   checkAtSeveralDeflections(BRepPrimAPI_MakeBox(100, 0.01, 20).Shape(), "slab");

@@ -20,6 +20,7 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <gp_Ax3.hxx>
@@ -63,6 +64,25 @@ const gp_Ax3 kFrame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1), gp_Dir(1, 0, 0));
 // A quarter of a thin torus (R = 10, r = 1): along the tube it turns 10 times slower than round it.
 Handle(Geom_Surface) torusPatch() {
   return new Geom_RectangularTrimmedSurface(new Geom_ToroidalSurface(kFrame, 10, 1), 0, M_PI / 2, 0, M_PI / 2);
+}
+
+// A sphere's scaled UV is conformal: at every latitude a small step in u and one in v grow in the
+// scaled plane by the same factor over their 3D lengths (Mercator), to within the piecewise-linear
+// spans' error, up to 80 degrees from the equator. With one scale each way the factors' ratio
+// followed the cosine of the latitude (a factor 6 between the equator and 80 degrees).
+TEST(UvScaling, SphereIsConformal) {
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(new Geom_SphericalSurface(gp_Ax3(), 7.0), 1e-7).Face();
+  const SurfaceEval eval(face, 0.007, 20 * M_PI / 180);
+  for (double latitude = -80; latitude <= 80; latitude += 10) {
+    const double u = 1.0, v = latitude * M_PI / 180, h = 1e-6;
+    gp_Pnt p;
+    gp_Vec du, dv;
+    eval.adaptor().D1(u, v, p, du, dv);
+    const cet::Point2 a = eval.scaled(u, v), b = eval.scaled(u + h, v), c = eval.scaled(u, v + h);
+    const double alongU = std::hypot(b.x - a.x, b.y - a.y) / (h * du.Magnitude());
+    const double alongV = std::hypot(c.x - a.x, c.y - a.y) / (h * dv.Magnitude());
+    EXPECT_NEAR(alongU / alongV, 1.0, 0.03) << "latitude " << latitude;
+  }
 }
 
 TEST(UvScaling, TorusRunsAlongItsTube) {

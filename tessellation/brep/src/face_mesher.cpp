@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 
 #include <Standard_Failure.hxx>
 
@@ -73,6 +74,8 @@ FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings
   // the centroid and edge midpoints catch; doubly curved ones can peak elsewhere in big triangles.
   freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone;
   exactDeviation_ = eval_.exactTriangleDeviation();
+  if (eval_.adaptor().IsUPeriodic()) uPeriod_ = eval_.adaptor().UPeriod();
+  if (eval_.adaptor().IsVPeriodic()) vPeriod_ = eval_.adaptor().VPeriod();
   for (const std::string& r : topology_.repairs) repairs_.push_back(r);
   repaired_ = !repairs_.empty();
 }
@@ -450,7 +453,14 @@ FaceMesher::Corners FaceMesher::corners(cet::TriangleId t, const FaceMesh& mesh)
     c.u[i] = mesh.uv[2 * o], c.w[i] = mesh.uv[2 * o + 1];
   }
   const double e = settings_.coincident;
-  c.collapsed = c.p[0].IsEqual(c.p[1], e) || c.p[1].IsEqual(c.p[2], e) || c.p[0].IsEqual(c.p[2], e);
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    if (!c.p[i].IsEqual(c.p[j], e)) continue;
+    c.collapsed = true;
+    if (m.isConstrained(t, k)) continue;
+    if (std::abs(c.u[i] - c.u[j]) >= 0.5 * uPeriod_ && uPeriod_ > 0) c.wraps = true;
+    if (std::abs(c.w[i] - c.w[j]) >= 0.5 * vPeriod_ && vPeriod_ > 0) c.wraps = true;
+  }
   return c;
 }
 
@@ -605,6 +615,9 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     if (!c.collapsed) r.edgeDeviation[i] = static_cast<float>(edgeWorst[i]), r.edgeCorresponding[i] = static_cast<float>(edgeCorresponding[i]);
   }
   if (pending.deferred == 0) conclude(r, pending, c.collapsed);
+  // Across a seam: split whatever the tolerance (a level coarser than the whole face, such as a
+  // small sphere's level 0, saw every triangle collapsed across its seam and dropped none).
+  if (c.wraps) r.deviation = std::numeric_limits<float>::max();
 }
 
 void FaceMesher::finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const {

@@ -101,6 +101,9 @@ class FaceMesher {
     gp_Pnt p[3];
     double u[3], w[3];
     bool collapsed = false;  // two corners on one 3D point
+    // Two of them half a period or more apart in a periodic direction, with no boundary chord
+    // between them: the triangle spans the seam, and the band it stands for is not covered.
+    bool wraps = false;
   };
   struct Pending {            // what evaluateTriangle leaves for finishTriangle
     double worst = -1, corresponding = -1;  // the interior samples' largest distances
@@ -158,6 +161,7 @@ class FaceMesher {
   std::unique_ptr<cet::Triangulator> cdt_;
   std::uint32_t base_ = 0;  // output id of triangulator vertex 0
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
+  double uPeriod_ = 0, vPeriod_ = 0;  // the surface's periods (0: not periodic that way)
   std::vector<std::uint8_t> singular_;  // normal not defined by first derivatives (pole, apex)
   std::vector<Occurrence> occurrences_;
   TriangleRecords records_;

@@ -157,6 +157,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   try {
     buildAxis(true, uAxis_);
     buildAxis(false, vAxis_);
+    if (surface_.GetType() == GeomAbs_Sphere) buildConformalSphereAxes();
   } catch (const Standard_Failure&) {
     uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {su}, uAxis_.period = 0;
     vAxis_.t = {v0}, vAxis_.x = {0.0}, vAxis_.slope = {sv}, vAxis_.period = 0;
@@ -231,6 +232,29 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
   axis.period = periodic ? knots.back() - knots.front() : 0.0;
   axis.periodX = axis.x.back();
+}
+
+void SurfaceEval::buildConformalSphereAxes() {
+  const double r = surface_.Sphere().Radius();
+  const double a = std::max(vMin, -M_PI / 2), b = std::min(vMax, M_PI / 2);
+  if (!(r > 0) || !(b > a)) return;
+  su = r;
+  uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {r}, uAxis_.period = 0;
+  // Spans over which the cosine changes by kConformalSpanChange at most (its logarithm's slope is
+  // tan v), and no longer than kConformalSpanRad.
+  const double cosCap = std::cos(kConformalCapRad);
+  Axis merc;
+  merc.t = {a};
+  merc.x = {0.0};
+  while (merc.t.back() < b) {
+    const double t0 = merc.t.back();
+    const double steep = std::min(std::abs(std::tan(t0)) + kConformalSpanChange, std::tan(kConformalCapRad));
+    const double t1 = std::min(b, t0 + std::min(kConformalSpanRad, kConformalSpanChange / steep));
+    merc.slope.push_back(r / std::max(std::cos(0.5 * (t0 + t1)), cosCap));
+    merc.x.push_back(merc.x.back() + (t1 - t0) * merc.slope.back());
+    merc.t.push_back(t1);
+  }
+  vAxis_ = merc;
 }
 
 double SurfaceEval::Axis::map(double value) const {
