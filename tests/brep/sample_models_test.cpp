@@ -89,6 +89,9 @@ class OcctMiscFlips : public ::testing::Test {
     tessellator_ = Tessellator::create(*model_, test::relative(0.001)).tessellator;
     ASSERT_TRUE(tessellator_ && tessellator_->run(2));
   }
+  void expectNoFlippedTriangleOnAnyLevel() const {
+    for (int k = 0; k <= tessellator_->lastLevel(); ++k) EXPECT_EQ(countFlipped(*tessellator_, k), 0u) << "level " << k;
+  }
   std::unique_ptr<Model> model_;  // outlives the tessellator, which refers to it
   std::unique_ptr<Tessellator> tessellator_;
 };
@@ -119,9 +122,8 @@ TEST_F(OcctMiscFlips, CountFlippedIsThePerFaceMeasuresSum) {
 TEST_F(OcctMiscFlips, TerrainsRimLeavesNoSlivers) {
   mesh("occ/terrain.brep");
   if (IsSkipped() || HasFatalFailure()) return;
-  const Tessellator* t = tessellator_.get();
-  ASSERT_GE(t->lastLevel(), 4);
-  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
+  ASSERT_GE(tessellator_->lastLevel(), 4);
+  expectNoFlippedTriangleOnAnyLevel();
 }
 
 // occ/Bottom.brep at 0.1%: two corner blends (B-spline patches pinched to a side 0.47 long) bend
@@ -132,8 +134,7 @@ TEST_F(OcctMiscFlips, TerrainsRimLeavesNoSlivers) {
 TEST_F(OcctMiscFlips, CornerBlendsAreNotFlippedOnCoarseLevels) {
   mesh("occ/Bottom.brep");
   if (IsSkipped() || HasFatalFailure()) return;
-  const Tessellator* t = tessellator_.get();
-  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
+  expectNoFlippedTriangleOnAnyLevel();
 }
 
 // occ/Top.brep at 0.1%: eight corner blends like Bottom's curl so far at level 0 that the far side
@@ -143,8 +144,7 @@ TEST_F(OcctMiscFlips, CornerBlendsAreNotFlippedOnCoarseLevels) {
 TEST_F(OcctMiscFlips, CurledCornerBlendsHalveTheirChords) {
   mesh("occ/Top.brep");
   if (IsSkipped() || HasFatalFailure()) return;
-  const Tessellator* t = tessellator_.get();
-  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(countFlipped(*t, k), 0u) << "level " << k;
+  expectNoFlippedTriangleOnAnyLevel();
 }
 
 }  // namespace

@@ -238,7 +238,6 @@ void SurfaceEval::buildConformalSphereAxes() {
   const double r = surface_.Sphere().Radius();
   const double a = std::max(vMin, -M_PI / 2), b = std::min(vMax, M_PI / 2);
   if (!(r > 0) || !(b > a)) return;
-  su = r;
   uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {r}, uAxis_.period = 0;
   // Spans over which the cosine changes by kConformalSpanChange at most (its logarithm's slope is
   // tan v), and no longer than kConformalSpanRad.

@@ -65,7 +65,8 @@ class SurfaceEval {
   // bends less is then shrunk by the ratio of the steps the tolerances allow each way. On a
   // B-spline surface whose knot spans run at very different 3D speeds (a span 1e-4 as long as its
   // neighbours carrying as much of the surface, say) one scale cannot serve them all: each span then
-  // gets its own (x is piecewise linear in u, continuous, monotone).
+  // gets its own (x is piecewise linear in u, continuous, monotone). On a sphere y is piecewise
+  // linear in v too, and the map conformal (buildConformalSphereAxes).
   cet::Point2 scaled(double u, double v) const { return {uAxis_.map(u), vAxis_.map(v)}; }
   void unscaled(const cet::Point2& q, double& u, double& v) const { u = uAxis_.inverse(q.x), v = vAxis_.inverse(q.y); }
   double u0 = 0, v0 = 0, su = 1, sv = 1;  // the one scale (the mean over the face) in each direction
@@ -126,12 +127,13 @@ class SurfaceEval {
   void buildAxis(bool uDir, Axis& axis) const;
   // A sphere's scaled UV is conformal: x = r u and y = r ln tan(pi/4 + v/2) (Mercator), piecewise
   // linear in spans of latitude across the face (the scale changing by kConformalSpanChange at most
-  // in each, about 160 spans from pole to pole) and capped kConformalCapRad from the equator (the
-  // pole rows would run off to infinity). The Delaunay criterion in (x, y) then
-  // judges shapes as on the sphere at every latitude; with one scale each way (the mean over the
-  // face) triangles near the poles were squeezed across the meridians and near the equator
-  // stretched along them: a whole sphere of radius 10 at 0.1% took 2984 triangles (BRepMesh 2836),
-  // now 2596, and CylinderHead's hemispherical pocket 1140 -> 1000.
+  // in each, at most kConformalSpanRad long: 441 spans from pole to pole) and capped
+  // kConformalCapRad from the equator (the pole rows would run off to infinity). The Delaunay
+  // criterion in (x, y) then judges shapes as on the sphere at every latitude; with one scale each
+  // way (the mean over the face) triangles near the poles were squeezed across the meridians and
+  // near the equator stretched along them: a whole sphere of radius 10 at 0.1% took 2984 triangles
+  // (BRepMesh 2836), now 2602, and CylinderHead's hemispherical pocket 1140 -> 996. su and sv
+  // keep the mean 3D speeds (the edge table's estimate of the face's extent).
   static constexpr double kConformalSpanChange = 0.02;
   static constexpr double kConformalSpanRad = 5 * M_PI / 180;
   static constexpr double kConformalCapRad = 88 * M_PI / 180;
