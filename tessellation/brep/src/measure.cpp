@@ -21,12 +21,15 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
       {.25, 0, .75}, {.5, 0, .5}, {.75, 0, .25}, {.5, .25, .25}, {.25, .5, .25}, {.25, .25, .5}};
   double worst = 0;
   const bool exact = eval.exactTriangleDeviation();
+  const bool closedForm = eval.closedFormDistance();
   for (std::size_t t = 0; t < triangles; ++t) {
     const std::uint32_t v[3] = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
     if (exact) {  // planes, cylinders, spheres: the largest distance itself, not only at the samples
       auto corner = [&](int i) { return gp_Pnt(positions[3 * v[i]], positions[3 * v[i] + 1], positions[3 * v[i] + 2]); };
       int where = -1;
-      worst = std::max(worst, eval.triangleDeviation(corner(0), corner(1), corner(2), where));
+      const double d = eval.triangleDeviation(corner(0), corner(1), corner(2), where);
+      worst = std::max(worst, d);
+      if (d >= 0) continue;  // a triangle with no area falls through to the samples
     }
     for (const auto& b : kSamples) {
       gp_XYZ m(0, 0, 0);
@@ -35,6 +38,12 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
         m += b[i] * gp_XYZ(positions[3 * v[i]], positions[3 * v[i] + 1], positions[3 * v[i] + 2]);
         u += b[i] * uv[2 * v[i]], w += b[i] * uv[2 * v[i] + 1];
       }
+      if (closedForm) {  // cones and tori (and degenerate triangles on the others): the distance itself
+        worst = std::max(worst, eval.projectOnce(gp_Pnt(m), 0, 0, nullptr));
+        continue;
+      }
+      // Elsewhere Gauss-Newton from a UV start: never under the distance, but over it where the
+      // projection does not converge in 8 steps.
       double d = eval.project(gp_Pnt(m), u, w, 8);
       if (!eval.linear()) {
         // Spans with scales of their own (surface_eval.h): the triangle is straight in the scaled
