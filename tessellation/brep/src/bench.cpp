@@ -184,8 +184,11 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
         r.cetview_faces_over_angle += fq.maxCornerAngle > angleLimit;
         r.cetview_degenerate += fq.degenerate;
         r.cetview_flipped += fq.flipped;
+        r.cetview_flipped_across_folds += fq.flippedAcrossFolds;
       }
-      for (int k = 0; k < tess->lastLevel(); ++k) r.cetview_flipped_coarse += countFlipped(*tess, k);
+      for (int k = 0; k < tess->lastLevel(); ++k) {
+        r.cetview_flipped_coarse += countFlipped(*tess, k, &r.cetview_flipped_coarse_across_folds);
+      }
       for (PartId p = 0; p < model.parts().size(); ++p) {
         if (model.parts()[p].closed) r.cetview_cracks += countOpenEdges(partSoup(*tess, p), weld);
       }
@@ -292,6 +295,8 @@ std::string benchJson(const BenchResult& r) {
   num("cetview_degenerate", static_cast<double>(r.cetview_degenerate));
   num("cetview_flipped", static_cast<double>(r.cetview_flipped));
   num("cetview_flipped_coarse", static_cast<double>(r.cetview_flipped_coarse));
+  num("cetview_flipped_across_folds", static_cast<double>(r.cetview_flipped_across_folds));
+  num("cetview_flipped_coarse_across_folds", static_cast<double>(r.cetview_flipped_coarse_across_folds));
   num("cetview_triangles_kept", static_cast<double>(r.cetview_triangles_kept));
   num("brepmesh_triangles_kept", static_cast<double>(r.brepmesh_triangles_kept));
   num("brepmesh_degenerate", static_cast<double>(r.brepmesh_degenerate));

@@ -53,6 +53,21 @@ double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::Ve
 // location walk can cycle for ever.
 bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && cet::supportedCoordinate(p.y); }
 
+// A flipped or folded triangle below the level's minimum size is still split (down to a thousandth
+// of the tolerance) where one point inside it ends the fault:
+// - a corner is a pole: a triangle fanning from a pole's row onto a straight edge out of the pole
+//   has its corners on one line in 3D (edge-on), however small;
+// - it faces away from its corners' normals while they agree (no edge turns them by 90 degrees):
+//   a real orientation error, which coarse levels left on Propeller's thin blade tips (a triangle
+//   0.98 long at a level whose minimum size is 1.09). Where the corners' normals oppose, the
+//   surface's own parametrisation folds between them (A319's wing tip, a sheet folded flat): no
+//   triangle across the fold faces both ways, and splitting there only makes more of them.
+bool splitsBelowMinSize(const TriangleRecord& r) {
+  if (r.flags & TriangleRecord::kPoleCorner) return true;
+  const bool flipped = (r.flags & TriangleRecord::kFlipped) || r.facetCos < 0;
+  return flipped && r.normalCos >= 0;
+}
+
 }  // namespace
 
 bool traceFace(FaceId face) {
@@ -931,12 +946,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) &&
-                 (r->longest > minSize || ((r->flags & TriangleRecord::kPoleCorner) && r->longest > 1e-3 * level.chordal))) {
+                 (r->longest > minSize || (splitsBelowMinSize(*r) && r->longest > 1e-3 * level.chordal))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
-        // thinner ones). Below the minimum size too where a corner is a pole: a triangle fanning
-        // from a pole's row onto a straight edge out of the pole has its corners on one line in 3D
-        // (edge-on), however small, and one point inside it ends that.
+        // thinner ones).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
       }
       if (at < 0) continue;

@@ -85,14 +85,16 @@ double measureCornerAngle(const SurfaceEval& eval, const double* positions, cons
 namespace {
 
 // The orientation of triangle i of `idx` against its corners' surface normals: counts it in
-// degenerate (no area: |cross| <= 1e-12 * longest edge squared) or flipped (facing away).
+// degenerate (no area: |cross| <= 1e-12 * longest edge squared) or flipped (facing away), and a
+// flipped one also in acrossFolds when two of its corners' normals oppose.
 void classifyTriangle(const FaceMesh& m, const std::vector<std::uint32_t>& idx, std::size_t i, std::size_t& degenerate,
-                      std::size_t& flipped) {
-  gp_XYZ p[3], n(0, 0, 0);
+                      std::size_t& flipped, std::size_t& acrossFolds) {
+  gp_XYZ p[3], normal[3], n(0, 0, 0);
   for (int c = 0; c < 3; ++c) {
     const std::uint32_t v = idx[i + static_cast<std::size_t>(c)];
     p[c] = gp_XYZ(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-    n += gp_XYZ(m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2]);
+    normal[c] = gp_XYZ(m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2]);
+    n += normal[c];
   }
   const gp_XYZ cr = (p[1] - p[0]).Crossed(p[2] - p[0]);
   const double longest = std::max({(p[1] - p[0]).Modulus(), (p[2] - p[1]).Modulus(), (p[0] - p[2]).Modulus()});
@@ -100,6 +102,7 @@ void classifyTriangle(const FaceMesh& m, const std::vector<std::uint32_t>& idx, 
     ++degenerate;
   } else if (cr.Dot(n) <= 0) {
     ++flipped;
+    if (normal[0].Dot(normal[1]) < 0 || normal[1].Dot(normal[2]) < 0 || normal[2].Dot(normal[0]) < 0) ++acrossFolds;
   }
 }
 
@@ -109,14 +112,15 @@ std::size_t levelIndex(const FaceMesh& m, int level) {
 
 }  // namespace
 
-std::size_t countFlipped(const Tessellator& t, int level) {
-  std::size_t flipped = 0, degenerate = 0;
+std::size_t countFlipped(const Tessellator& t, int level, std::size_t* acrossFolds) {
+  std::size_t flipped = 0, degenerate = 0, folds = 0;
   for (FaceId f = 0; f < t.model().faces().size(); ++f) {
     const FaceMesh& m = t.faceMesh(f);
     if (m.levels.empty()) continue;
     const std::vector<std::uint32_t>& idx = m.levels[levelIndex(m, level)];
-    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, degenerate, flipped);
+    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, degenerate, flipped, folds);
   }
+  if (acrossFolds) *acrossFolds += folds;
   return flipped;
 }
 
@@ -129,7 +133,7 @@ std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned 
     if (m.levels.empty()) return;
     const std::vector<std::uint32_t>& idx = m.levels[levelIndex(m, level)];
     q.triangles = idx.size() / 3;
-    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, q.degenerate, q.flipped);
+    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, q.degenerate, q.flipped, q.flippedAcrossFolds);
     try {
       SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
       q.maxDeviation = measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data(), q.triangles);

@@ -41,8 +41,10 @@ struct BenchResult {
   std::size_t cetview_faces_over_angle = 0, brepmesh_faces_over_angle = 0;
   std::size_t cetview_cracks = 0, brepmesh_cracks = 0;          // open edges after welding, closed parts only
   std::size_t cetview_degenerate = 0, brepmesh_degenerate = 0;
-  // cetview's flipped triangles (brep/measure.h) on the final level, and over its coarser levels.
+  // cetview's flipped triangles (brep/measure.h) on the final level, and over its coarser levels;
+  // of each, those across folds of the surface's parametrisation (FaceQuality::flippedAcrossFolds).
   std::size_t cetview_flipped = 0, cetview_flipped_coarse = 0;
+  std::size_t cetview_flipped_across_folds = 0, cetview_flipped_coarse_across_folds = 0;
   // Triangles of both meshers over the faces where BRepMesh keeps the deflection and the angle:
   // the triangle goal on the faces where the two meet the same promise.
   std::size_t cetview_triangles_kept = 0, brepmesh_triangles_kept = 0;

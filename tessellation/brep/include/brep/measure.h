@@ -14,6 +14,10 @@ struct FaceQuality {
   std::size_t triangles = 0;
   std::size_t degenerate = 0; // zero-area triangles (|cross| <= 1e-12 * longest edge squared)
   std::size_t flipped = 0;    // triangles facing against their corners' surface normals
+  // Of those, the ones across a fold: two corners' normals oppose (a negative dot product), as
+  // where a surface's parametrisation folds a sheet flat (a wing tip closed to zero thickness).
+  // No flat triangle faces both ways there; the rest are orientation errors.
+  std::size_t flippedAcrossFolds = 0;
   // Largest angle (radians) between the exact surface normals at the ends of a triangle edge, over
   // edges of at least a tenth of the final chordal tolerance, off poles and creases.
   double maxCornerAngle = 0;
@@ -21,13 +25,15 @@ struct FaceQuality {
 
 // Measures level `level` of every face (each face's last level for -1). The deviation is sampled at
 // 13 points of every triangle (the centroid and a barycentric grid of step 1/4 without the corners),
-// each projected onto the exact surface by Newton iteration from its interpolated (u, v); on planes,
-// cylinders and spheres it is also computed exactly per triangle (the largest distance in closed form).
+// each projected onto the exact surface by Gauss-Newton iteration from its interpolated (u, v). On
+// elementary surfaces it is exact: on planes, cylinders and spheres the largest distance over the
+// triangle in closed form, on cones and tori the samples' distances in closed form.
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level = -1, unsigned threads = 1);
 
 // Flipped triangles (as FaceQuality::flipped) over every face of level `level` (each face's last
-// level for -1), without the surface measures: cheap enough for every level of a bench run.
-std::size_t countFlipped(const Tessellator& t, int level);
+// level for -1), without the surface measures: cheap enough for every level of a bench run. Those
+// across folds (FaceQuality::flippedAcrossFolds) also go to `acrossFolds` when given.
+std::size_t countFlipped(const Tessellator& t, int level, std::size_t* acrossFolds = nullptr);
 
 // The same measure per triangle (the viewer's deviation heat map): out[f][i] is the deviation of
 // triangle i of face f's level `level` (each face's last level for -1), in the order of
