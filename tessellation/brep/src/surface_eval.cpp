@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -197,13 +198,19 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   if (n < 3 || n > 2049) return;  // one span, or more than are worth sampling
   std::vector<double> knots(static_cast<std::size_t>(n));
   for (int i = 1; i <= n; ++i) knots[std::size_t(i - 1)] = uDir ? bs->UKnot(i) : bs->VKnot(i);
-  // Mean 3D speed of each span, sampled across the face's extent in the other direction; the spans
-  // the face covers decide whether one scale will do.
+  // Mean 3D speed of each span the face covers, sampled across the face's extent in the other
+  // direction; those spans decide whether one scale will do. The spans it does not cover (a face
+  // trimmed from a large surface: most of them) are not sampled and take the mean speed: no point of
+  // the face maps through them, and they shift the covered spans' x by a constant only. A periodic
+  // direction samples every span, as its period in x depends on all of them.
   const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
   const double from = uDir ? uMin : vMin, to = uDir ? uMax : vMax;
-  std::vector<double> slope(knots.size() - 1);
+  const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
+  std::vector<double> slope(knots.size() - 1, std::numeric_limits<double>::quiet_NaN());
   double smin = 1e300, smax = 0;
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
+    const bool covered = knots[k + 1] > from && knots[k] < to;
+    if (!covered && !periodic) continue;
     double sum = 0;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 5; ++j) {
@@ -219,7 +226,7 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
       }
     }
     slope[k] = sum / 15;
-    if (knots[k + 1] > from && knots[k] < to) smin = std::min(smin, slope[k]), smax = std::max(smax, slope[k]);
+    if (covered) smin = std::min(smin, slope[k]), smax = std::max(smax, slope[k]);
   }
   if (!(smax > 4 * smin) || !std::isfinite(smax)) return;
   // A span without extent (its poles on one point) still needs some room in x.
@@ -229,7 +236,6 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   axis.slope = slope;
   axis.x.assign(1, 0.0);
   for (std::size_t k = 0; k < slope.size(); ++k) axis.x.push_back(axis.x.back() + (knots[k + 1] - knots[k]) * slope[k]);
-  const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
   axis.period = periodic ? knots.back() - knots.front() : 0.0;
   axis.periodX = axis.x.back();
 }
