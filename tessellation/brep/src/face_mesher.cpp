@@ -57,11 +57,12 @@ bool supported(const cet::Point2& p) { return cet::supportedCoordinate(p.x) && c
 // of the tolerance) where one point inside it ends the fault:
 // - a corner is a pole: a triangle fanning from a pole's row onto a straight edge out of the pole
 //   has its corners on one line in 3D (edge-on), however small;
-// - it faces away from its corners' normals while they agree (no edge turns them by 90 degrees):
-//   a real orientation error, which coarse levels left on Propeller's thin blade tips (a triangle
-//   0.98 long at a level whose minimum size is 1.09). Where the corners' normals oppose, the
-//   surface's own parametrisation folds between them (A319's wing tip, a sheet folded flat): no
-//   triangle across the fold faces both ways, and splitting there only makes more of them.
+// - it faces away from its corners' normals while they agree (normalCos >= 0: no free edge between
+//   regular corners turns them by 90 degrees or more): a real orientation error, which coarse
+//   levels left on Propeller's thin blade tips (a triangle 0.98 long at a level whose minimum size
+//   is 1.09). Where the corners' normals oppose, the surface's own parametrisation folds between
+//   them (A319's wing tip, a sheet folded flat): no triangle across the fold faces both ways, and
+//   splitting there only makes more of them (1853 flipped on A319's level 4).
 bool splitsBelowMinSize(const TriangleRecord& r) {
   if (r.flags & TriangleRecord::kPoleCorner) return true;
   const bool flipped = (r.flags & TriangleRecord::kFlipped) || r.facetCos < 0;

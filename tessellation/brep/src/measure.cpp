@@ -82,27 +82,43 @@ double measureCornerAngle(const SurfaceEval& eval, const double* positions, cons
   return worst;
 }
 
-namespace {
-
-// The orientation of triangle i of `idx` against its corners' surface normals: counts it in
-// degenerate (no area: |cross| <= 1e-12 * longest edge squared) or flipped (facing away), and a
-// flipped one also in acrossFolds when two of its corners' normals oppose.
-void classifyTriangle(const FaceMesh& m, const std::vector<std::uint32_t>& idx, std::size_t i, std::size_t& degenerate,
-                      std::size_t& flipped, std::size_t& acrossFolds) {
+TriangleFacing triangleFacing(const double* positions, const float* normals, const std::uint32_t corner[3]) {
   gp_XYZ p[3], normal[3], n(0, 0, 0);
   for (int c = 0; c < 3; ++c) {
-    const std::uint32_t v = idx[i + static_cast<std::size_t>(c)];
-    p[c] = gp_XYZ(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-    normal[c] = gp_XYZ(m.normals[3 * v], m.normals[3 * v + 1], m.normals[3 * v + 2]);
+    const std::uint32_t v = corner[c];
+    p[c] = gp_XYZ(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+    normal[c] = gp_XYZ(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
     n += normal[c];
   }
   const gp_XYZ cr = (p[1] - p[0]).Crossed(p[2] - p[0]);
   const double longest = std::max({(p[1] - p[0]).Modulus(), (p[2] - p[1]).Modulus(), (p[0] - p[2]).Modulus()});
-  if (cr.Modulus() <= 1e-12 * longest * longest) {
-    ++degenerate;
-  } else if (cr.Dot(n) <= 0) {
-    ++flipped;
-    if (normal[0].Dot(normal[1]) < 0 || normal[1].Dot(normal[2]) < 0 || normal[2].Dot(normal[0]) < 0) ++acrossFolds;
+  if (cr.Modulus() <= 1e-12 * longest * longest) return TriangleFacing::kDegenerate;
+  if (cr.Dot(n) > 0) return TriangleFacing::kFacing;
+  if (normal[0].Dot(normal[1]) < 0 || normal[1].Dot(normal[2]) < 0 || normal[2].Dot(normal[0]) < 0) {
+    return TriangleFacing::kFlippedAcrossFold;
+  }
+  return TriangleFacing::kFlipped;
+}
+
+namespace {
+
+// Counts triangle i of `idx` (triangleFacing) in degenerate or flipped, and a flipped one across a
+// fold in acrossFolds as well.
+void classifyTriangle(const FaceMesh& m, const std::vector<std::uint32_t>& idx, std::size_t i, std::size_t& degenerate,
+                      std::size_t& flipped, std::size_t& acrossFolds) {
+  switch (triangleFacing(m.positions.data(), m.normals.data(), idx.data() + i)) {
+    case TriangleFacing::kFacing:
+      break;
+    case TriangleFacing::kDegenerate:
+      ++degenerate;
+      break;
+    case TriangleFacing::kFlippedAcrossFold:
+      ++acrossFolds;
+      ++flipped;
+      break;
+    case TriangleFacing::kFlipped:
+      ++flipped;
+      break;
   }
 }
 

@@ -9,10 +9,11 @@
 
 namespace cetview::brep {
 
-// Largest distance from the triangles to the surface: 13 samples per triangle projected by Newton
-// from their interpolated (u, v), and on planes, cylinders and spheres also the exact largest
-// distance of each triangle (SurfaceEval::triangleDeviation). positions xyz and uv per vertex; idx
-// three per triangle.
+// Largest distance from the triangles to the surface. On planes, cylinders and spheres the exact
+// largest distance of each triangle (SurfaceEval::triangleDeviation); on cones and tori 13 samples
+// per triangle at their closed-form distances; elsewhere the 13 samples projected by Gauss-Newton
+// from their interpolated (u, v), which never reads under the distance but may read over it where
+// the projection does not converge. positions xyz and uv per vertex; idx three per triangle.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
                         std::size_t triangles);
 
@@ -22,5 +23,13 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
 // crease of the surface (where no refinement brings the normals together) are not counted.
 double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv, std::size_t vertices,
                           const std::uint32_t* idx, std::size_t triangles, double minLength);
+
+// How a triangle (corner: its three vertex indices) faces against its corners' unit surface normals
+// (xyz per vertex): degenerate (no area: |cross| <= 1e-12 * longest edge squared), facing (along
+// their sum), or flipped (against it); flipped across a fold when two corners' normals oppose (a
+// negative dot product: the surface's parametrisation folds between them, and no flat triangle
+// faces both ways). FaceQuality's degenerate, flipped and flippedAcrossFolds count these.
+enum class TriangleFacing { kFacing, kDegenerate, kFlipped, kFlippedAcrossFold };
+TriangleFacing triangleFacing(const double* positions, const float* normals, const std::uint32_t corner[3]);
 
 }  // namespace cetview::brep
