@@ -439,11 +439,12 @@ struct Counts {
   long inputs = 0, shapes = 0, refused = 0, loadErrors = 0, createErrors = 0;
   long refusedBy[kRefusalCount] = {};  // kNoRefusal: a degenerate loop the generator itself dropped
   long faces = 0, ok = 0, repaired = 0, fallback = 0, empty = 0;
-  long measuredLevels = 0;         // (face, level) pairs measured on kOk faces
-  long okLevelsOver = 0;           // kOk (face, level) deviating beyond the level's chordal tolerance
-  long okFacesOverFinal = 0;       // kOk faces deviating beyond the tolerance of the last level run
-  long okNotMeasurable = 0;        // kOk faces whose deviation came out infinite or NaN
-  double worstRatio = 0;           // largest deviation / tolerance on a kOk face
+  // The promise is measured on the faces CET meshed (kOk, and kRepaired after a sound repair).
+  long measuredLevels = 0;         // (face, level) pairs measured on such faces
+  long okLevelsOver = 0;           // those deviating beyond the level's chordal tolerance
+  long okFacesOverFinal = 0;       // faces deviating beyond the tolerance of the last level run
+  long okNotMeasurable = 0;        // faces whose deviation came out infinite or NaN
+  double worstRatio = 0;           // largest deviation / tolerance
   long cetFacesDegenerate = 0, cetDegenerate = 0, cetFacesFlipped = 0, cetFlipped = 0;  // kOk, kRepaired
   long fallbackFacesDegenerate = 0, fallbackFacesFlipped = 0;
   long triangles = 0;
@@ -515,7 +516,7 @@ void measurePromise(const Tessellator& t, int last) {
       const FaceStatus status = t.report(f).status;
       const FaceQuality& q = quality[f];
       const bool cet = status == FaceStatus::kOk || status == FaceStatus::kRepaired;
-      if (status == FaceStatus::kOk) {
+      if (cet) {
         ++counts.measuredLevels;
         if (!std::isfinite(q.maxDeviation)) {
           if (k == last) ++counts.okNotMeasurable;
@@ -608,13 +609,13 @@ void printCounts(std::FILE* out) {
                "%ld, degenerate loop %ld), %ld load errors, %ld create errors\n"
                "face_fuzz: %ld faces: %ld ok, %ld repaired, %ld fallback, %ld empty; %ld final triangles; %ld runs "
                "stopped early by the triangle budget, %ld cancelled by the time budget\n"
-               "face_fuzz: promise on ok faces: %ld of %ld faces over the tolerance of their last level, %ld of %ld "
+               "face_fuzz: promise on ok/repaired faces: %ld of %ld faces over the tolerance of their last level, %ld of %ld "
                "(face, level) over the level's, worst %.3gx, %ld not measurable\n"
                "face_fuzz: ok/repaired faces with degenerate triangles %ld (%ld triangles), with flipped %ld (%ld "
                "triangles); fallback faces with degenerate %ld, flipped %ld\n",
                c.inputs, c.shapes, c.refused, c.refusedBy[kRefusedEdge], c.refusedBy[kRefusedWire],
                c.refusedBy[kRefusedFace], c.refusedBy[kRefusedThrow], c.refusedBy[kNoRefusal], c.loadErrors, c.createErrors, c.faces, c.ok, c.repaired, c.fallback,
-               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.okFacesOverFinal, c.ok, c.okLevelsOver, c.measuredLevels, c.worstRatio,
+               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.okFacesOverFinal, c.ok + c.repaired, c.okLevelsOver, c.measuredLevels, c.worstRatio,
                c.okNotMeasurable, c.cetFacesDegenerate, c.cetDegenerate, c.cetFacesFlipped, c.cetFlipped,
                c.fallbackFacesDegenerate, c.fallbackFacesFlipped);
   if (!firstLoadError.empty()) std::fprintf(out, "face_fuzz: first load error: %s\n", firstLoadError.c_str());
@@ -657,7 +658,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ++counts.shapes;
   if (const char* dump = std::getenv("FACE_FUZZ_DUMP")) {  // debugging: the shape and the parameters
     BRepTools::Write(shape, dump);
-    std::fprintf(stderr, "face_fuzz: wrote %s; deflection %.6g%%, angle %.3g deg, %s\n", dump,
+    std::fprintf(stderr, "face_fuzz: wrote %s; deflection %.17g%%, angle %.17g deg, %s\n", dump,
                  params.chordal.value * 100, params.angleDeg, params.progressive ? "progressive" : "final level only");
   }
   try {

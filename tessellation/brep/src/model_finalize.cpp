@@ -2,9 +2,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -13,11 +16,13 @@
 #include <gp_Vec2d.hxx>
 #include <Bnd_Box.hxx>
 #include <ShapeFix_Edge.hxx>
+#include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <NCollection_DataMap.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
@@ -159,6 +164,57 @@ std::string addMissingPcurves(const TopoDS_Face& face) {
          " from the 3D curve";
 }
 
+// Edges of `face` flagged degenerated whose pcurve does not stay on one point of the surface (a
+// closed iso row of a periodic surface flagged as a pole: BRepCheck's InvalidDegeneratedFlag) are
+// made regular edges, their 3D curve built from the pcurve on the surface. Meshed as a pole, such a
+// row puts the whole boundary on one point while the surface along it spans a curve: no mesh of
+// the face is then within any tolerance, and refinement runs down to its smallest size chasing it.
+// Returns the repair for the face's report ("" when none was needed).
+std::string fixFalseDegenerateEdges(const TopoDS_Face& face) {
+  const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(forward);
+  if (surface.IsNull()) return {};
+  int fixed = 0;
+  double widest = 0;
+  TopTools_IndexedMapOfShape seen;
+  for (TopExp_Explorer e(forward, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+    if (!BRep_Tool::Degenerated(edge) || seen.Contains(edge)) continue;
+    seen.Add(edge);
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, forward, first, last);
+    TopoDS_Vertex v0, v1;
+    TopExp::Vertices(edge, v0, v1);
+    if (pcurve.IsNull() || v0.IsNull() || !std::isfinite(first) || !std::isfinite(last)) continue;
+    // A true pole keeps its surface row within the tolerances the file gives it.
+    const double allowed = 10 * std::max({BRep_Tool::Tolerance(edge), BRep_Tool::Tolerance(v0), Precision::Confusion()});
+    const gp_Pnt pole = BRep_Tool::Pnt(v0);
+    double spread = 0;
+    try {
+      constexpr int kSamples = 32;
+      for (int i = 0; i <= kSamples; ++i) {
+        const gp_Pnt2d uv = pcurve->Value(first + (last - first) * i / kSamples);
+        spread = std::max(spread, surface->Value(uv.X(), uv.Y()).Distance(pole));
+      }
+    } catch (const Standard_Failure&) {
+      continue;  // the face reports what it cannot evaluate when it is meshed
+    }
+    if (!(spread > allowed)) continue;
+    BRep_Builder().Degenerated(edge, Standard_False);
+    if (!BRepLib::BuildCurve3d(edge, BRep_Tool::Tolerance(edge))) {
+      BRep_Builder().Degenerated(edge, Standard_True);  // left as it was: the face reports the bad row
+      continue;
+    }
+    ++fixed;
+    widest = std::max(widest, spread);
+  }
+  if (fixed == 0) return {};
+  char span[32];
+  std::snprintf(span, sizeof span, "%.3g", widest);
+  return (fixed > 1 ? std::to_string(fixed) + " edges" : std::string("an edge")) + " flagged degenerated but spanning " +
+         span + " on the surface: meshed as regular";
+}
+
 // A part's box; a face whose wires cannot bound its surface (a pcurve is still missing) can make
 // OpenCASCADE's box infinite, and then the edges' box stands for the part.
 Bounds partBounds(const TopoDS_Shape& shape) {
@@ -219,7 +275,6 @@ std::string finalizeModel(ModelImpl& m) {
     part.firstEdge = static_cast<EdgeId>(m.edgeShapes.size());
     part.edgeCount = static_cast<std::uint32_t>(m.partEdgeMaps[p].Extent());
     for (int i = 1; i <= m.partEdgeMaps[p].Extent(); ++i) m.edgeShapes.push_back(TopoDS::Edge(m.partEdgeMaps[p](i)));
-    part.closed = partIsClosed(shape);
 
     // Colours attached to sub-shapes: a face's own colour, else the colour of a solid/shell holding it.
     NCollection_DataMap<TopoDS_Shape, Color, TopTools_ShapeMapHasher> ownColor, inheritedColor;
@@ -235,7 +290,10 @@ std::string finalizeModel(ModelImpl& m) {
     }
     for (int i = 1; i <= faceMap.Extent(); ++i) {
       const TopoDS_Face& face = TopoDS::Face(faceMap(i));
-      m.loadRepairs.push_back(addMissingPcurves(face));
+      std::string repairs = addMissingPcurves(face);
+      const std::string rows = fixFalseDegenerateEdges(face);
+      if (!rows.empty()) repairs += (repairs.empty() ? "" : "; ") + rows;
+      m.loadRepairs.push_back(std::move(repairs));
       FaceInfo info;
       info.part = p;
       BRepAdaptor_Surface surface(face, Standard_False);
@@ -253,6 +311,7 @@ std::string finalizeModel(ModelImpl& m) {
       m.faceShapes.push_back(face);
       m.faces.push_back(info);
     }
+    part.closed = partIsClosed(shape);  // after the repairs: an edge may no longer be degenerated
     part.bounds = partBounds(shape);
   }
   if (m.faces.empty()) return "no B-rep faces (only points, curves or tessellated geometry)";

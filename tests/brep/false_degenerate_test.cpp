@@ -1,0 +1,110 @@
+// Edges flagged degenerated that are not (BRepCheck's InvalidDegeneratedFlag): a closed iso row of a
+// periodic surface written as a pole. Loading makes them regular edges and reports the repair; true
+// poles and apexes stay degenerate.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <Precision.hxx>
+#include <gp_Ax3.hxx>
+
+#include "test_support.h"
+
+namespace cetview::brep {
+namespace {
+
+constexpr double kHeight = 20;
+
+// A tube of radius 5 and height kHeight on `surface` (u around, v along the axis), natural bounds.
+TopoDS_Face tube(const Handle(Geom_Surface)& surface) {
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  surface->Bounds(u0, u1, v0, v1);
+  if (Precision::IsInfinite(u1)) u0 = 0, u1 = 2 * M_PI;
+  return BRepBuilderAPI_MakeFace(surface, u0, u1, 0, kHeight, 1e-7).Face();
+}
+
+// The same face with its top rim (the edge at v = kHeight) flagged degenerated and stripped of its
+// 3D curve, as a writer that took the closed row for a pole leaves it.
+TopoDS_Face withTopRimFlaggedDegenerate(const TopoDS_Face& face) {
+  TopoDS_Face copy = face;
+  for (TopExp_Explorer e(copy, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+    if (BRep_Tool::IsClosed(edge, copy)) continue;  // the seam
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, copy, first, last);
+    if (pcurve.IsNull() || std::abs(pcurve->Value(0.5 * (first + last)).Y() - kHeight) > 1e-9) continue;
+    BRep_Builder builder;
+    builder.UpdateEdge(edge, Handle(Geom_Curve)(), BRep_Tool::Tolerance(edge));
+    builder.Degenerated(edge, Standard_True);
+  }
+  return copy;
+}
+
+std::size_t finalTriangles(const Tessellator& t) { return t.triangleCount(t.lastLevel()); }
+
+void checkRimIsMeshedAlongTheSurface(const Handle(Geom_Surface)& surface, const std::string& name) {
+  const MeshParams params = test::relative(0.001);
+  auto clean = test::loadShape(tube(surface), name + "_clean");
+  ASSERT_TRUE(clean);
+  auto reference = test::tessellateAndCheck(*clean, params);
+  ASSERT_TRUE(reference);
+
+  auto flagged = test::loadShape(withTopRimFlaggedDegenerate(tube(surface)), name + "_flagged");
+  ASSERT_TRUE(flagged);
+  // The promise on every level: meshed as a pole, the rim's row sat on one point and the face was
+  // nowhere near its surface (a fuzzed B-spline strip: 279x the deflection, 2.3M triangles).
+  auto t = test::tessellateAndCheck(*flagged, params);
+  ASSERT_TRUE(t);
+  const FaceReport report = t->report(0);
+  EXPECT_EQ(report.status, FaceStatus::kRepaired) << report.reason;
+  EXPECT_NE(report.reason.find("flagged degenerated but spanning 10 on the surface"), std::string::npos) << report.reason;
+  EXPECT_LE(finalTriangles(*t), finalTriangles(*reference) * 11 / 10)
+      << "clean: " << finalTriangles(*reference) << ", flagged: " << finalTriangles(*t);
+}
+
+TEST(FalseDegenerateEdges, CylinderRimFlaggedAsAPoleIsMeshedAlongTheSurface) {
+  checkRimIsMeshedAlongTheSurface(new Geom_CylindricalSurface(gp_Ax3(), 5), "cylinder_rim");
+}
+
+TEST(FalseDegenerateEdges, PeriodicBSplineRimFlaggedAsAPoleIsMeshedAlongTheSurface) {
+  const Handle(Geom_BSplineSurface) bspline = GeomConvert::SurfaceToBSplineSurface(
+      new Geom_RectangularTrimmedSurface(new Geom_CylindricalSurface(gp_Ax3(), 5), 0, 2 * M_PI, 0, kHeight));
+  ASSERT_FALSE(bspline.IsNull());
+  if (!bspline->IsUPeriodic()) bspline->SetUPeriodic();
+  ASSERT_TRUE(bspline->IsUPeriodic());
+  checkRimIsMeshedAlongTheSurface(bspline, "bspline_rim");
+}
+
+TEST(FalseDegenerateEdges, TruePolesAndApexesStayDegenerate) {
+  const std::pair<TopoDS_Shape, const char*> shapes[] = {
+      {BRepPrimAPI_MakeSphere(10).Shape(), "sphere"},
+      {BRepPrimAPI_MakeCone(5, 0, 10).Shape(), "cone_apex"},
+  };
+  for (const auto& [shape, name] : shapes) {
+    SCOPED_TRACE(name);
+    auto model = test::loadShape(shape, name);
+    ASSERT_TRUE(model);
+    auto t = test::tessellateAndCheck(*model, test::relative(0.001));
+    ASSERT_TRUE(t);
+    for (FaceId f = 0; f < model->faces().size(); ++f) {
+      EXPECT_EQ(t->report(f).status, FaceStatus::kOk) << f << ": " << t->report(f).reason;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cetview::brep
