@@ -53,6 +53,11 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
         eval.blend(3, b3, cu, cv, u, w);
         d = std::min(d, eval.project(gp_Pnt(m), u, w, 8));
       }
+      // A sample that would raise the maximum is taken on by damped steps from the best point found:
+      // where the parametrisation folds or pinches (Su or Sv vanishing), Gauss-Newton overshoots and
+      // stalls far from the foot (a fuzzed folded sheet read 6x its true deviation; BRepMesh's mesh of
+      // terrain 1.17x the deflection, 0.93x measured so).
+      if (d > worst) d = std::min(d, eval.projectDamped(gp_Pnt(m), u, w, 50));
       worst = std::max(worst, d);
     }
   }

@@ -12,8 +12,9 @@ namespace cetview::brep {
 // Largest distance from the triangles to the surface. On planes, cylinders and spheres the exact
 // largest distance of each triangle (SurfaceEval::triangleDeviation); on cones and tori 13 samples
 // per triangle at their closed-form distances; elsewhere the 13 samples projected by Gauss-Newton
-// from their interpolated (u, v), which never reads under the distance but may read over it where
-// the projection does not converge. positions xyz and uv per vertex; idx three per triangle.
+// from their interpolated (u, v), and a sample that would raise the maximum then by damped steps
+// (Levenberg-Marquardt) down to a local minimum of its distance: never under the distance, and over
+// it only where the nearest point lies beyond another local minimum. positions xyz and uv per vertex; idx three per triangle.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
                         std::size_t triangles);
 

@@ -388,6 +388,46 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
   return d;
 }
 
+double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter) const {
+  gp_Pnt s;
+  gp_Vec du, dv;
+  d1(u, v, s, du, dv);
+  double d = s.Distance(m);
+  double lambda = 1e-3;
+  for (int it = 0; it < maxIter && d > 0; ++it) {
+    const gp_Vec r(s, m);
+    const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv);
+    const double ru = r.Dot(du), rv = r.Dot(dv);
+    // Stationary: the residual is normal to the surface (up to rounding).
+    if (std::abs(ru) <= 1e-12 * d * std::sqrt(a) && std::abs(rv) <= 1e-12 * d * std::sqrt(c)) break;
+    bool improved = false;
+    for (int tries = 0; tries < 30 && !improved; ++tries) {
+      const double da = a + lambda * (a + 1e-300), dc = c + lambda * (c + 1e-300);
+      const double det = da * dc - b * b;
+      if (!(det > 0)) {
+        lambda *= 4;
+        continue;
+      }
+      double nu = u + (ru * dc - rv * b) / det, nv = v + (da * rv - b * ru) / det;
+      if (!uPeriodic_) nu = std::clamp(nu, su0_, su1_);
+      if (!vPeriodic_) nv = std::clamp(nv, sv0_, sv1_);
+      gp_Pnt s2;
+      gp_Vec du2, dv2;
+      d1(nu, nv, s2, du2, dv2);
+      const double d2 = s2.Distance(m);
+      if (d2 < d) {
+        u = nu, v = nv, s = s2, du = du2, dv = dv2, d = d2;
+        lambda = std::max(lambda / 3, 1e-9);
+        improved = true;
+      } else {
+        lambda *= 4;
+      }
+    }
+    if (!improved) break;
+  }
+  return d;
+}
+
 double SurfaceEval::projectOnce(const gp_Pnt& m, double u, double v, double* start, double enough) const {
   if (elementary_.valid()) {
     if (start) *start = point(u, v).Distance(m);

@@ -45,6 +45,10 @@ class SurfaceEval {
   // point found. maxIter bounds the derivative evaluations.
   // `start` (if given) receives |S(u, v) - m| at the starting (u, v): the corresponding-point distance.
   double project(const gp_Pnt& m, double& u, double& v, int maxIter, double* start = nullptr) const;
+  // The same by Levenberg-Marquardt: each step is damped until it brings the point closer, so the
+  // iterates descend to a local minimum of the distance even where Gauss-Newton overshoots (across a
+  // pole or a fold of the parametrisation, where Su or Sv vanishes). Slower: for the measure only.
+  double projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter) const;
   // The refinement's estimate of the same: on planes, cylinders, cones, spheres and tori the exact
   // distance to the surface in closed form; otherwise Gauss-Newton that stops once a step moves the
   // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
