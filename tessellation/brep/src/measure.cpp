@@ -81,6 +81,7 @@ double measureCornerAngle(const SurfaceEval& eval, const double* positions, cons
       const gp_Pnt pb(positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]);
       if (pa.Distance(pb) < minLength) continue;
       if (eval.crossesCrease(uv[2 * a], uv[2 * a + 1], uv[2 * b], uv[2 * b + 1])) continue;
+      if (eval.normalJumps(uv[2 * a], uv[2 * a + 1], uv[2 * b], uv[2 * b + 1], normal[a], normal[b])) continue;
       worst = std::max(worst, normal[a].Angle(normal[b]));
     }
   }

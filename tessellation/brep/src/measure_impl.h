@@ -20,8 +20,9 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
 
 // Largest angle (radians) between the exact surface normals at the two ends of a triangle edge:
 // DESIGN.md's angular deflection. Edges shorter than `minLength` (the size below which neither
-// mesher applies the angle), with an end where the normal is undefined (a pole, an apex) or across a
-// crease of the surface (where no refinement brings the normals together) are not counted.
+// mesher applies the angle), with an end where the normal is undefined (a pole, an apex), across a
+// crease of the surface or a fold of its parametrisation (where the normal jumps: no refinement
+// brings the two sides' normals together) are not counted.
 double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv, std::size_t vertices,
                           const std::uint32_t* idx, std::size_t triangles, double minLength);
 

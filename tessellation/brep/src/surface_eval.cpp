@@ -340,7 +340,7 @@ bool SurfaceEval::onDegenerateRow(double u, double v) const {
   return false;
 }
 
-bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
+bool SurfaceEval::regularNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   gp_Vec du, dv;
   d1(u, v, p, du, dv);
   const gp_Vec c = du.Crossed(dv);
@@ -353,6 +353,32 @@ bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
     n = gp_Dir(c);
     return true;
   }
+  return false;
+}
+
+bool SurfaceEval::normalJumps(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb) const {
+  if (na.Dot(nb) >= 0) return false;
+  double t0 = 0, t1 = 1;
+  gp_Dir n0 = na, n1 = nb;
+  for (int k = 0; k < kJumpBisections; ++k) {
+    const double t = 0.5 * (t0 + t1);
+    gp_Pnt p;
+    gp_Dir n;
+    // The Jacobian vanishes on a fold line itself; met early, it is a pole between the ends instead.
+    if (!regularNormal(ua + t * (ub - ua), va + t * (vb - va), p, n)) return k >= kJumpBisections / 2;
+    if (n.Dot(n0) < n.Dot(n1)) {  // the first half turns further
+      t1 = t, n1 = n;
+    } else {
+      t0 = t, n0 = n;
+    }
+    if (n0.Dot(n1) >= 0) return false;  // the turn divides: the surface bends
+  }
+  return true;
+}
+
+bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
+  if (regularNormal(u, v, p, n)) return true;
+  gp_Vec du, dv;
   gp_Dir estimated;
   if (geom_.IsNull()) geom_ = BRep_Tool::Surface(face_);  // located: a copy when the face has a location
   if (GeomLib::NormEstim(geom_, gp_Pnt2d(u, v), 1e-7, estimated) <= 1) {

@@ -99,9 +99,22 @@ class SurfaceEval {
   bool crossesCrease(double ua, double va, double ub, double vb) const {
     return crosses(uCreases_, uPeriod_, ua, ub) || crosses(vCreases_, vPeriod_, va, vb);
   }
+  // True when the unit normal jumps on the UV segment from (ua, va) to (ub, vb), whose ends' normals
+  // na and nb oppose (a negative dot product): bisecting towards the half that turns further, the
+  // turn stays above 90 degrees down to 2^-kJumpBisections of the segment. A parametrisation that
+  // folds its sheet over (Su x Sv through zero and back: a wing tip closed flat, a blade tip pinched)
+  // flips the normal so, and no refinement brings the two sides' normals together, as across a
+  // crease; a surface that merely bends divides its turn between the halves within a few steps.
+  // (A surface bending by 90 degrees within 2^-24 of an edge's length is taken for a jump too.)
+  // False where a pole lies between. Thread-safe where concurrentSafe().
+  bool normalJumps(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb) const;
+  static constexpr int kJumpBisections = 24;
+
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
  private:
+  // pointNormal's first-derivative normal; false (n unset) where it is not defined.
+  bool regularNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
   double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,
                      double settle = 1e-3, double enough = 0) const;
 

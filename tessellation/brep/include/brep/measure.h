@@ -19,7 +19,8 @@ struct FaceQuality {
   // No flat triangle faces both ways there; the rest are orientation errors.
   std::size_t flippedAcrossFolds = 0;
   // Largest angle (radians) between the exact surface normals at the ends of a triangle edge, over
-  // edges of at least a tenth of the final chordal tolerance, off poles and creases.
+  // edges of at least a tenth of the final chordal tolerance, off poles, creases and folds (where the
+  // normal jumps).
   double maxCornerAngle = 0;
 };
 
