@@ -17,6 +17,9 @@
 #include <Geom_Curve.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <Precision.hxx>
@@ -37,21 +40,21 @@ TopoDS_Face tube(const Handle(Geom_Surface)& surface) {
   return BRepBuilderAPI_MakeFace(surface, u0, u1, 0, kHeight, 1e-7).Face();
 }
 
-// The same face with its top rim (the edge at v = kHeight) flagged degenerated and stripped of its
-// 3D curve, as a writer that took the closed row for a pole leaves it.
-TopoDS_Face withTopRimFlaggedDegenerate(const TopoDS_Face& face) {
-  TopoDS_Face copy = face;
-  for (TopExp_Explorer e(copy, TopAbs_EDGE); e.More(); e.Next()) {
+// `face` with its edge along v = `v` flagged degenerated and stripped of its 3D curve, as a writer
+// that took the row for a pole leaves it.
+TopoDS_Face withRowFlaggedDegenerate(const TopoDS_Face& face, double v) {
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
-    if (BRep_Tool::IsClosed(edge, copy)) continue;  // the seam
+    if (BRep_Tool::IsClosed(edge, face)) continue;  // a seam
     double first = 0, last = 0;
-    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, copy, first, last);
-    if (pcurve.IsNull() || std::abs(pcurve->Value(0.5 * (first + last)).Y() - kHeight) > 1e-9) continue;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+    if (pcurve.IsNull() || std::abs(pcurve->Value(first).Y() - v) > 1e-9 || std::abs(pcurve->Value(last).Y() - v) > 1e-9)
+      continue;
     BRep_Builder builder;
     builder.UpdateEdge(edge, Handle(Geom_Curve)(), BRep_Tool::Tolerance(edge));
     builder.Degenerated(edge, Standard_True);
   }
-  return copy;
+  return face;
 }
 
 std::size_t finalTriangles(const Tessellator& t) { return t.triangleCount(t.lastLevel()); }
@@ -63,7 +66,7 @@ void checkRimIsMeshedAlongTheSurface(const Handle(Geom_Surface)& surface, const 
   auto reference = test::tessellateAndCheck(*clean, params);
   ASSERT_TRUE(reference);
 
-  auto flagged = test::loadShape(withTopRimFlaggedDegenerate(tube(surface)), name + "_flagged");
+  auto flagged = test::loadShape(withRowFlaggedDegenerate(tube(surface), kHeight), name + "_flagged");
   ASSERT_TRUE(flagged);
   // The promise on every level: meshed as a pole, the rim's row sat on one point and the face was
   // nowhere near its surface (a fuzzed B-spline strip: 279x the deflection, 2.3M triangles).
@@ -87,6 +90,37 @@ TEST(FalseDegenerateEdges, PeriodicBSplineRimFlaggedAsAPoleIsMeshedAlongTheSurfa
   if (!bspline->IsUPeriodic()) bspline->SetUPeriodic();
   ASSERT_TRUE(bspline->IsUPeriodic());
   checkRimIsMeshedAlongTheSurface(bspline, "bspline_rim");
+}
+
+// A three-sided B-spline patch whose v = 0 row of poles lies within 2e-5 of one point (as CAD
+// exports write them; the part is 10 across), flagged degenerated with the default tolerance of
+// 1e-7: a pole still, though the row spreads beyond ten times its tolerance.
+TEST(FalseDegenerateEdges, AMicronWideCollapsedRowStaysAPole) {
+  const int n = 4;
+  TColgp_Array2OfPnt poles(1, n, 1, n);
+  for (int i = 1; i <= n; ++i) {
+    const double theta = (i - 1) / double(n - 1);
+    poles.SetValue(i, 1, gp_Pnt(2e-5 * std::cos(3.0 * i), 2e-5 * std::sin(3.0 * i), 0));
+    for (int j = 2; j <= n; ++j) {
+      const double r = 10.0 * (j - 1) / (n - 1);
+      poles.SetValue(i, j, gp_Pnt(r * std::cos(theta), r * std::sin(theta), 0.3 * r + 0.5 * std::sin(1.0 * i * j)));
+    }
+  }
+  TColStd_Array1OfReal knots(1, 2);
+  TColStd_Array1OfInteger mults(1, 2);
+  knots(1) = 0, knots(2) = 1, mults(1) = mults(2) = n;
+  const Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, knots, knots, mults, mults, n - 1, n - 1);
+  const TopoDS_Face face = withRowFlaggedDegenerate(BRepBuilderAPI_MakeFace(surface, 1e-7).Face(), 0);
+  int degenerate = 0;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) degenerate += BRep_Tool::Degenerated(TopoDS::Edge(e.Current()));
+  ASSERT_EQ(degenerate, 1);
+  auto model = test::loadShape(face, "micron_row");
+  ASSERT_TRUE(model);
+  auto created = Tessellator::create(*model, test::relative(0.001));
+  ASSERT_TRUE(created.tessellator) << created.error;
+  ASSERT_TRUE(created.tessellator->run(1));
+  EXPECT_EQ(created.tessellator->report(0).reason.find("flagged degenerated"), std::string::npos)
+      << created.tessellator->report(0).reason;
 }
 
 TEST(FalseDegenerateEdges, TruePolesAndApexesStayDegenerate) {

@@ -164,12 +164,13 @@ std::string addMissingPcurves(const TopoDS_Face& face) {
          " from the 3D curve";
 }
 
-// Edges of `face` flagged degenerated whose pcurve does not stay on one point of the surface (a
-// closed iso row of a periodic surface flagged as a pole: BRepCheck's InvalidDegeneratedFlag) are
-// made regular edges, their 3D curve built from the pcurve on the surface. Meshed as a pole, such a
-// row puts the whole boundary on one point while the surface along it spans a curve: no mesh of
-// the face is then within any tolerance, and refinement runs down to its smallest size chasing it.
-// Returns the repair for the face's report ("" when none was needed).
+// Edges of `face` flagged degenerated whose pcurve does not stay on one point of the surface (beyond
+// ten times their tolerances and a thousandth of the face: a closed iso row of a periodic surface
+// flagged as a pole, BRepCheck's InvalidDegeneratedFlag) are made regular edges, their 3D curve
+// built from the pcurve on the surface. Meshed as a pole, such a row puts the whole boundary on one
+// point while the surface along it spans a curve: no mesh of the face is then within any tolerance,
+// and refinement runs down to its smallest size chasing it. Returns the repair for the face's
+// report ("" when none was needed).
 std::string fixFalseDegenerateEdges(const TopoDS_Face& face) {
   const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(forward);
@@ -200,6 +201,11 @@ std::string fixFalseDegenerateEdges(const TopoDS_Face& face) {
       continue;  // the face reports what it cannot evaluate when it is meshed
     }
     if (!(spread > allowed)) continue;
+    // A B-spline's collapsed row is often a micron wide (surface_eval.h): a pole still, whatever the
+    // tolerances say. A row spanning a thousandth of the face is not.
+    Bnd_Box box;
+    BRepBndLib::Add(forward, box, Standard_False);
+    if (box.IsVoid() || !(spread > 1e-3 * std::sqrt(box.SquareExtent()))) continue;
     BRep_Builder().Degenerated(edge, Standard_False);
     if (!BRepLib::BuildCurve3d(edge, BRep_Tool::Tolerance(edge))) {
       BRep_Builder().Degenerated(edge, Standard_True);  // left as it was: the face reports the bad row
