@@ -36,6 +36,11 @@ namespace {
 // Passes of batch insertion per level. A pass splits an independent set of the offending triangles
 // (at least one), so this bounds a level's refinement depth, not its work.
 constexpr int kMaxPasses = 400;
+// Splits of flipped triangles below the level's minimum size (splitsBelowMinSize) per face and level.
+// A few end an orientation error (Propeller's blade tips took 4); where a fold of the surface's
+// parametrisation meets a pole, every split made another flipped sliver beside it, down to a
+// thousandth of the tolerance (a fuzzed folded sheet: 2.1 million triangles in 13 s).
+constexpr int kMaxSplitsBelowMinSize = 1024;
 // Triangles per chunk when a pass's measuring is shared out (a triangle takes a few microseconds).
 constexpr std::size_t kMeasureGrain = 64;
 
@@ -887,6 +892,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
   std::vector<gp_Pnt2d> uvs;
   if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
+  int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
     const int stamp = ++passStamp_;
@@ -952,11 +958,13 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) &&
-                 (r->longest > minSize || (splitsBelowMinSize(*r) && r->longest > 1e-3 * level.chordal))) {
+                 (r->longest > minSize || (splitsBelowMinSize(*r) && r->longest > 1e-3 * level.chordal &&
+                                           belowMinSize < kMaxSplitsBelowMinSize))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
         // thinner ones).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
+        belowMinSize += r->longest <= minSize;
       }
       if (at < 0) continue;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
