@@ -883,6 +883,11 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
   return m.isConstrained(t, 0) || m.isConstrained(t, 1) || m.isConstrained(t, 2);
 }
 
+bool FaceMesher::allSingular(cet::TriangleId t) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  return singular_[m.vertex(t, 0)] && singular_[m.vertex(t, 1)] && singular_[m.vertex(t, 2)];
+}
+
 bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = (exactDeviation_ ? kExactDeviationMargin : kDeviationMargin) * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
@@ -957,7 +962,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       } else if (angleSplit.splits(*r)) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
-      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) &&
+      } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && !allSingular(t) &&
                  (r->longest > minSize || (splitsBelowMinSize(*r) && r->longest > 1e-3 * level.chordal &&
                                            belowMinSize < kMaxSplitsBelowMinSize))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread

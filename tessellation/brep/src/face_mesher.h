@@ -126,6 +126,9 @@ class FaceMesher {
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
   bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
+  // No corner of t has a first-derivative normal: the surface has no area there (collapsed onto a
+  // curve or a point), and its triangles no orientation that a split could put right.
+  bool allSingular(cet::TriangleId t) const;
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)
