@@ -116,11 +116,9 @@ TEST(FalseDegenerateEdges, AMicronWideCollapsedRowStaysAPole) {
   ASSERT_EQ(degenerate, 1);
   auto model = test::loadShape(face, "micron_row");
   ASSERT_TRUE(model);
-  auto created = Tessellator::create(*model, test::relative(0.001));
-  ASSERT_TRUE(created.tessellator) << created.error;
-  ASSERT_TRUE(created.tessellator->run(1));
-  EXPECT_EQ(created.tessellator->report(0).reason.find("flagged degenerated"), std::string::npos)
-      << created.tessellator->report(0).reason;
+  auto t = test::tessellate(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).reason.find("flagged degenerated"), std::string::npos) << t->report(0).reason;
 }
 
 TEST(FalseDegenerateEdges, TruePolesAndApexesStayDegenerate) {

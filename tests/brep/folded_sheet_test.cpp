@@ -107,20 +107,14 @@ TEST(NormalJumps, AcrossAFoldButNotWhereASurfaceBends) {
 TEST(FoldedSheet, IsMeshedWithoutRefiningAlongTheFold) {
   auto model = test::loadShape(BRepBuilderAPI_MakeFace(foldedSheet(), 1e-7).Face(), "folded_sheet");
   ASSERT_TRUE(model);
-  const MeshParams params = test::relative(0.001);
-  auto created = Tessellator::create(*model, params);
-  ASSERT_TRUE(created.tessellator) << created.error;
-  Tessellator& t = *created.tessellator;
-  ASSERT_TRUE(t.run(1));
-  for (int k = 0; k <= t.lastLevel(); ++k) {
-    SCOPED_TRACE("level " + std::to_string(k));
-    const FaceQuality q = measureFaces(t, k).at(0);
-    EXPECT_LE(q.maxDeviation, t.schedule()[std::size_t(k)].chordal);
+  auto t = test::tessellate(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  for (const FaceQuality& q : test::expectEveryLevelWithinTolerance(*t, 0)) {
     EXPECT_EQ(q.degenerate, 0u);
     EXPECT_EQ(q.flipped, q.flippedAcrossFolds) << "only across the fold";
   }
-  const FaceQuality final = measureFaces(t).at(0);
-  EXPECT_LE(final.maxCornerAngle, t.angleRad() * (1 + 1e-6));
+  const FaceQuality final = measureFaces(*t).at(0);
+  EXPECT_LE(final.maxCornerAngle, t->angleRad() * (1 + 1e-6));
   EXPECT_LE(final.triangles, 500u) << "3658 when the fold is not recognised";
 }
 
@@ -131,17 +125,14 @@ TEST(FoldedSheet, IsMeshedWithoutRefiningAlongTheFold) {
 // where a fold meets the pole left another beside it, down to a thousandth of the tolerance: 2.1
 // million triangles in 13 s (BRepMesh: 339; progressively, 2545).
 TEST(FoldedSheet, AFoldIntoAPoleDoesNotCascadeAtTheFinalLevel) {
-  LoadResult loaded = loadModel(std::string(CETVIEW_BREP_TEST_DATA) + "/fold_into_pole.brep");
-  ASSERT_TRUE(loaded.model) << loaded.error;
+  auto model = test::loadTestData("fold_into_pole.brep");
+  ASSERT_TRUE(model);
   MeshParams params = test::relative(0.001);
   params.progressive = false;
-  auto created = Tessellator::create(*loaded.model, params);
-  ASSERT_TRUE(created.tessellator) << created.error;
-  Tessellator& t = *created.tessellator;
-  ASSERT_TRUE(t.run(1));
-  const FaceQuality q = measureFaces(t).at(0);
-  EXPECT_LE(q.maxDeviation, t.chordal());
-  EXPECT_LE(q.triangles, 100000u);
+  auto t = test::tessellate(*model, params);
+  ASSERT_TRUE(t);
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  EXPECT_LE(levels.back().triangles, 100000u);
 }
 
 }  // namespace

@@ -30,6 +30,31 @@ std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& n
   return std::move(r.model);
 }
 
+std::unique_ptr<Model> loadTestData(const std::string& file) {
+  LoadResult r = loadModel(std::string(CETVIEW_BREP_TEST_DATA) + "/" + file);
+  EXPECT_TRUE(r) << r.error;
+  return std::move(r.model);
+}
+
+std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params) {
+  auto created = Tessellator::create(model, params);
+  EXPECT_TRUE(created.tessellator) << created.error;
+  if (created.tessellator && !created.tessellator->run(1)) {
+    ADD_FAILURE() << "run() returned false";
+    return nullptr;
+  }
+  return std::move(created.tessellator);
+}
+
+std::vector<FaceQuality> expectEveryLevelWithinTolerance(const Tessellator& t, FaceId f) {
+  std::vector<FaceQuality> levels;
+  for (int k = 0; k <= t.lastLevel(); ++k) {
+    levels.push_back(measureFaces(t, k).at(f));
+    EXPECT_LE(levels.back().maxDeviation, t.schedule()[std::size_t(k)].chordal) << "face " << f << ", level " << k;
+  }
+  return levels;
+}
+
 CheckOptions finalLevelOnly() {
   CheckOptions o;
   o.everyLevel = false;

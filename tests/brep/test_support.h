@@ -7,6 +7,7 @@
 
 #include <TopoDS_Shape.hxx>
 
+#include "brep/measure.h"
 #include "brep/model.h"
 #include "brep/tessellator.h"
 
@@ -40,6 +41,13 @@ struct CheckOptions {
 // angular deflection. Returns the tessellator for further checks.
 std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshParams& params,
                                                 const CheckOptions& options = {});
+
+// A model from tests/brep/data (inputs face_fuzz wrote); fails the test on a load error.
+std::unique_ptr<Model> loadTestData(const std::string& file);
+// Every level of every face on one thread; null, with a test failure, on an error.
+std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params);
+// Face f's measures on each level, each level's deviation expected within its chordal tolerance.
+std::vector<FaceQuality> expectEveryLevelWithinTolerance(const Tessellator& t, FaceId f);
 
 // Checks of the final level only (runs with many levels at fine deflections).
 CheckOptions finalLevelOnly();
