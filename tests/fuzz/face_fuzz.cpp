@@ -441,9 +441,9 @@ struct Counts {
   long faces = 0, ok = 0, repaired = 0, fallback = 0, empty = 0;
   // The promise is measured on the faces CET meshed (kOk, and kRepaired after a sound repair).
   long measuredLevels = 0;         // (face, level) pairs measured on such faces
-  long okLevelsOver = 0;           // those deviating beyond the level's chordal tolerance
-  long okFacesOverFinal = 0;       // faces deviating beyond the tolerance of the last level run
-  long okNotMeasurable = 0;        // faces whose deviation came out infinite or NaN
+  long cetLevelsOver = 0;          // those deviating beyond the level's chordal tolerance
+  long cetFacesOverFinal = 0;      // faces deviating beyond the tolerance of the last level run
+  long cetNotMeasurable = 0;       // faces whose deviation came out infinite or NaN
   double worstRatio = 0;           // largest deviation / tolerance
   long cetFacesDegenerate = 0, cetDegenerate = 0, cetFacesFlipped = 0, cetFlipped = 0;  // kOk, kRepaired
   long fallbackFacesDegenerate = 0, fallbackFacesFlipped = 0;
@@ -519,12 +519,12 @@ void measurePromise(const Tessellator& t, int last) {
       if (cet) {
         ++counts.measuredLevels;
         if (!std::isfinite(q.maxDeviation)) {
-          if (k == last) ++counts.okNotMeasurable;
+          if (k == last) ++counts.cetNotMeasurable;
         } else {
           counts.worstRatio = std::max(counts.worstRatio, q.maxDeviation / tolerance);
           if (q.maxDeviation > tolerance) {
-            ++counts.okLevelsOver;
-            if (k == last) ++counts.okFacesOverFinal;
+            ++counts.cetLevelsOver;
+            if (k == last) ++counts.cetFacesOverFinal;
           }
         }
       }
@@ -615,8 +615,8 @@ void printCounts(std::FILE* out) {
                "triangles); fallback faces with degenerate %ld, flipped %ld\n",
                c.inputs, c.shapes, c.refused, c.refusedBy[kRefusedEdge], c.refusedBy[kRefusedWire],
                c.refusedBy[kRefusedFace], c.refusedBy[kRefusedThrow], c.refusedBy[kNoRefusal], c.loadErrors, c.createErrors, c.faces, c.ok, c.repaired, c.fallback,
-               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.okFacesOverFinal, c.ok + c.repaired, c.okLevelsOver, c.measuredLevels, c.worstRatio,
-               c.okNotMeasurable, c.cetFacesDegenerate, c.cetDegenerate, c.cetFacesFlipped, c.cetFlipped,
+               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.cetFacesOverFinal, c.ok + c.repaired, c.cetLevelsOver, c.measuredLevels, c.worstRatio,
+               c.cetNotMeasurable, c.cetFacesDegenerate, c.cetDegenerate, c.cetFacesFlipped, c.cetFlipped,
                c.fallbackFacesDegenerate, c.fallbackFacesFlipped);
   if (!firstLoadError.empty()) std::fprintf(out, "face_fuzz: first load error: %s\n", firstLoadError.c_str());
 }

@@ -14,7 +14,8 @@ namespace cetview::brep {
 // per triangle at their closed-form distances; elsewhere the 13 samples projected by Gauss-Newton
 // from their interpolated (u, v), and a sample that would raise the maximum then by damped steps
 // (Levenberg-Marquardt) down to a local minimum of its distance: never under the distance, and over
-// it only where the nearest point lies beyond another local minimum. positions xyz and uv per vertex; idx three per triangle.
+// it only where the nearest point lies beyond another local minimum. positions xyz and uv per
+// vertex; idx three per triangle.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
                         std::size_t triangles);
 
