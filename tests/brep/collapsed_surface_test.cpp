@@ -1,10 +1,11 @@
-// A surface without area over part of its domain: tests/brep/data/collapsed_half.brep, written by
-// face_fuzz, is a B-spline whose poles over the last half of its u span all lie on one point. Its
-// triangles there have no area and corners without a first-derivative normal: no orientation a
-// split could put right. Split as flipped triangles, they ran on to the minimum size everywhere in
-// the collapsed half: 4.7 million triangles in 31 s at 0.1% (BRepMesh: 1552).
+// Surfaces without area over part or all of a face, as face_fuzz wrote them (tests/brep/data).
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Geom_Plane.hxx>
+#include <TopoDS_Face.hxx>
+
+#include "brep/export.h"
 #include "brep/measure.h"
 #include "brep/model.h"
 #include "brep/tessellator.h"
@@ -13,12 +14,49 @@
 namespace cetview::brep {
 namespace {
 
+// collapsed_half.brep is a B-spline whose poles over the last half of its u span all lie on one
+// point. Its triangles there have no area and corners without a first-derivative normal: no
+// orientation a split could put right. Split as flipped triangles, they ran on to the minimum size
+// everywhere in the collapsed half: 4.7 million triangles in 31 s at 0.1% (BRepMesh: 1552).
+
 TEST(CollapsedSurface, HalfCollapsedToAPointIsNotRefinedThere) {
   auto model = test::loadTestData("collapsed_half.brep");
   ASSERT_TRUE(model);
   auto t = test::tessellate(*model, test::relative(0.001));
   ASSERT_TRUE(t);
   for (const FaceQuality& q : test::expectEveryLevelWithinTolerance(*t, 0)) EXPECT_LE(q.triangles, 20000u);
+}
+
+// collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on one
+// segment: the face, bounded by two degenerate edges and the segment twice, has no area anywhere.
+// Its vertices' normals were rounding noise, and refinement chased them: 225k triangles (58k of
+// zero area) in 3 s at 0.1%, and 35 s for the final level alone. BRepMesh makes none. The face is
+// reported empty, with the reason, on every level.
+TEST(CollapsedSurface, OntoASegmentIsReportedEmpty) {
+  auto model = test::loadTestData("collapsed_segment.brep");
+  ASSERT_TRUE(model);
+  ASSERT_EQ(model->faces().size(), 1u);
+  auto t = test::tessellate(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  const FaceReport report = t->report(0);
+  EXPECT_EQ(report.status, FaceStatus::kEmpty);
+  EXPECT_NE(report.reason.find("no area"), std::string::npos) << report.reason;
+  for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(t->triangleCount(k), 0u) << "level " << k;
+  // Export has nothing to write, and says so.
+  const std::string error = exportModel(*t, test::tempPath("collapsed_segment.stl"));
+  EXPECT_NE(error.find("no face of the model has triangles"), std::string::npos) << error;
+}
+
+// A plane strip 100 long and 1e-6 wide (area 1e-8 of its extent squared, a hundred times the bar)
+// has area: it is meshed, not reported empty.
+TEST(CollapsedSurface, AStripAMillionthOfItsLengthWideIsMeshed) {
+  const TopoDS_Face strip = BRepBuilderAPI_MakeFace(new Geom_Plane(gp::XOY()), 0, 100, 0, 1e-6, 1e-9).Face();
+  auto model = test::loadShape(strip, "strip");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
+  EXPECT_GT(t->triangleCount(t->lastLevel()), 0u);
 }
 
 }  // namespace

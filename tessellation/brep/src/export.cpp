@@ -79,6 +79,12 @@ std::string exportModel(const Tessellator& t, const std::string& path) {
   const std::string ext = lowerExtension(path);
   if (!exportFormatSupported(path)) return path + ": unknown output format (use .brep, .glb, .gltf, .obj or .stl)";
   ModelImpl& m = t.model().impl();
+  bool anyTriangle = false;
+  for (FaceId f = 0; f < m.faceShapes.size() && !anyTriangle; ++f) {
+    const FaceMesh& mesh = t.faceMesh(f);
+    anyTriangle = !mesh.levels.empty() && !mesh.levels.back().empty();
+  }
+  if (!anyTriangle) return path + ": nothing to write: no face of the model has triangles";
   try {
     BRep_Builder builder;
     for (FaceId f = 0; f < m.faceShapes.size(); ++f) {

@@ -1076,6 +1076,18 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   return indices;
 }
 
+FaceStatus FaceMesher::leaveEmpty(const std::string& why, FaceMesh& mesh, FaceReport& report) {
+  cdt_.reset();
+  records_.clear();
+  fallback_ = true;
+  fallbackStatus_ = FaceStatus::kEmpty;
+  report.status = fallbackStatus_;
+  report.reason = why;
+  mesh.levels.emplace_back();
+  mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
+  return fallbackStatus_;
+}
+
 FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report) {
   cdt_.reset();
   records_.clear();
@@ -1125,6 +1137,10 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     return fallbackStatus_;
   }
   if (!topology_.failure.empty()) return useFallback(topology_.failure, mesh, report);
+  if (!areaChecked_) {
+    areaChecked_ = true;
+    if (eval_.collapsed()) return leaveEmpty("the surface has no area (it collapses onto a curve or a point)", mesh, report);
+  }
   std::string problem;
   try {
     bool ok = true;

@@ -84,6 +84,9 @@ class FaceMesher {
   // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
   std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
   FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report);
+  // A face with nothing to show (its surface has no area): every level is empty (kEmpty).
+  FaceStatus leaveEmpty(const std::string& why, FaceMesh& mesh, FaceReport& report);
+  bool areaChecked_ = false;  // SurfaceEval::collapsed() asked (on the first level)
   FaceStatus deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report);
   std::vector<std::uint32_t> deferredIndices_;  // the fallback mesh shown by deferred coarse levels
 

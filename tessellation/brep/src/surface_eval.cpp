@@ -6,6 +6,7 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_BezierCurve.hxx>
@@ -75,6 +76,8 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   double twistMax = 0;  // |Suv . N| / (|Su| |Sv|): how the normal turns along one direction as it moves the other
   int n = 0;
   int uTurns = 0, vTurns = 0;  // grid points where one direction's curvature is 4x the other's
+  Bnd_Box extent;
+  double boxArea = 0;  // the largest |Su x Sv| times the parameter box's area
   for (int i = 0; i < 5; ++i) {
     for (int j = 0; j < 5; ++j) {
       const double u = uMin + (uMax - uMin) * (i + 0.5) / 5, v = vMin + (vMax - vMin) * (j + 0.5) / 5;
@@ -84,6 +87,8 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
       const double mu = du.Magnitude(), mv = dv.Magnitude();
       lu += mu, lv += mv;
       const gp_Vec c = du.Crossed(dv);
+      extent.Add(p);
+      boxArea = std::max(boxArea, c.Magnitude() * (uMax - uMin) * (vMax - vMin));
       if (c.Magnitude() > 1e-12 * mu * mv && mu > 0 && mv > 0) {
         const gp_Vec nrm = c / c.Magnitude();
         const double pu = std::abs(duu.Dot(nrm)) / (mu * mu), pv = std::abs(dvv.Dot(nrm)) / (mv * mv);
@@ -98,6 +103,8 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   }
   lu /= n, lv /= n, ku /= n, kv /= n;
   meanLu_ = lu, meanLv_ = lv;
+  const double extent2 = extent.IsVoid() ? 0 : extent.SquareExtent();
+  gridArea_ = extent2 > 0 ? boxArea / extent2 : 0;
   const double floor = 1e-9 * std::max({lu, lv, 1e-300});
   su = std::max(lu, floor);
   sv = std::max(lv, floor);
@@ -300,6 +307,26 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
     if (period == 0) break;
   }
   return false;
+}
+
+bool SurfaceEval::collapsed() const {
+  if (!(uMax > uMin && vMax > vMin) || gridArea_ > 1e3 * kNoArea) return false;
+  // A closer look: the 5x5 grid may have missed where the area is.
+  constexpr int kSteps = 17;
+  const double du = (uMax - uMin) / (kSteps - 1), dv = (vMax - vMin) / (kSteps - 1);
+  Bnd_Box extent;
+  double largest = 0;  // |Su x Sv|
+  for (int i = 0; i < kSteps; ++i) {
+    for (int j = 0; j < kSteps; ++j) {
+      gp_Pnt p;
+      gp_Vec du1, dv1;
+      d1(uMin + du * i, vMin + dv * j, p, du1, dv1);
+      extent.Add(p);
+      largest = std::max(largest, du1.Crossed(dv1).Magnitude());
+    }
+  }
+  const double extent2 = extent.IsVoid() ? 0 : extent.SquareExtent();
+  return !(extent2 > 0 && largest * (uMax - uMin) * (vMax - vMin) > kNoArea * extent2);
 }
 
 void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {

@@ -112,6 +112,15 @@ class SurfaceEval {
 
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
+  // True when the surface has no area over the face's parameter box: it collapses onto a curve or a
+  // point (every row of a B-spline's poles one point, say). The largest |Su x Sv| on a 17x17 grid
+  // times the box's (u, v) area is then rounding noise against the square of the face's 3D extent
+  // (a face L long and w wide reads about w / L). Such a face has nothing to show, and its (u, v)
+  // maps to 3D too poorly for any mesher to work in: refinement chases noise normals (a B-spline
+  // collapsed onto a segment took 225k zero-area triangles in 3 s at 0.1%). False for a box
+  // without area: the face's boundary encloses none, whatever the surface (the domain says so).
+  bool collapsed() const;
+
  private:
   // pointNormal's first-derivative normal; false (n unset) where it is not defined.
   bool regularNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
@@ -171,6 +180,11 @@ class SurfaceEval {
   bool concurrentSafe_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
   double meanLu_ = 0, meanLv_ = 0;                 // mean |Su|, |Sv| over the face
+  // The largest |Su x Sv| times the box's (u, v) area against the face's 3D extent squared, below
+  // which the surface has no area; and that ratio on the constructor's 5x5 grid (collapsed() looks
+  // closer only when it is small).
+  static constexpr double kNoArea = 1e-10;
+  double gridArea_ = 0;
   std::vector<double> uCreases_, vCreases_;        // parameters of the crease lines, increasing
   double uPeriod_ = 0, vPeriod_ = 0;               // 0 unless periodic: creases repeat with it
 };
