@@ -27,13 +27,19 @@ TEST(CollapsedSurface, HalfCollapsedToAPointIsNotRefinedThere) {
   for (const FaceQuality& q : test::expectEveryLevelWithinTolerance(*t, 0)) EXPECT_LE(q.triangles, 20000u);
 }
 
-// collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on one
-// segment: the face, bounded by two degenerate edges and the segment twice, has no area anywhere.
-// Its vertices' normals were rounding noise, and refinement chased them: 225k triangles (58k of
-// zero area) in 3 s at 0.1%, and 35 s for the final level alone. BRepMesh makes none. The face is
-// reported empty, with the reason, on every level.
-TEST(CollapsedSurface, OntoASegmentIsReportedEmpty) {
-  auto model = test::loadTestData("collapsed_segment.brep");
+// Faces whose surface has no area anywhere: reported empty, with the reason, on every level.
+// - collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on
+//   one segment, bounded by two degenerate edges and the segment twice. Its vertices' normals were
+//   rounding noise, and refinement chased them: 225k triangles (58k of zero area) in 3 s at 0.1%,
+//   and 35 s for the final level alone. BRepMesh makes none.
+// - collapsed_extrapolated.brep is a rational patch whose face lies 23 to 53 units of v below its
+//   knots (v from 0 to 191), where the extrapolated surface is one curve: |Sv| is 1e-13 against
+//   |Su| of 4 to 13, a width of 3e-12 over a face 0.017 long. It ended 267x over the deflection in
+//   40 triangles on every level. BRepMesh makes none.
+class CollapsedOntoACurve : public testing::TestWithParam<const char*> {};
+
+TEST_P(CollapsedOntoACurve, IsReportedEmpty) {
+  auto model = test::loadTestData(GetParam());
   ASSERT_TRUE(model);
   ASSERT_EQ(model->faces().size(), 1u);
   auto t = test::tessellate(*model, test::relative(0.001));
@@ -43,9 +49,12 @@ TEST(CollapsedSurface, OntoASegmentIsReportedEmpty) {
   EXPECT_NE(report.reason.find("no area"), std::string::npos) << report.reason;
   for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_EQ(t->triangleCount(k), 0u) << "level " << k;
   // Export has nothing to write, and says so.
-  const std::string error = exportModel(*t, test::tempPath("collapsed_segment.stl"));
+  const std::string error = exportModel(*t, test::tempPath("collapsed.stl"));
   EXPECT_NE(error.find("no face of the model has triangles"), std::string::npos) << error;
 }
+
+INSTANTIATE_TEST_SUITE_P(FuzzedFaces, CollapsedOntoACurve,
+                         testing::Values("collapsed_segment.brep", "collapsed_extrapolated.brep"));
 
 // A plane strip 100 long and 1e-6 wide (area 1e-8 of its extent squared, a hundred times the bar)
 // has area: it is meshed, not reported empty.

@@ -326,7 +326,8 @@ bool SurfaceEval::collapsed() const {
     }
   }
   const double extent2 = extent.IsVoid() ? 0 : extent.SquareExtent();
-  return !(extent2 > 0 && largest * (uMax - uMin) * (vMax - vMin) > kNoArea * extent2);
+  const double area = largest * (uMax - uMin) * (vMax - vMin);  // at least the surface's area over the box
+  return !(extent2 > 0 && area > kNoArea * extent2 && area > kNoWidth * std::sqrt(extent2));
 }
 
 void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {

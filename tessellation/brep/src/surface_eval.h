@@ -115,7 +115,9 @@ class SurfaceEval {
   // True when the surface has no area over the face's parameter box: it collapses onto a curve or a
   // point (every row of a B-spline's poles one point, say). The largest |Su x Sv| on a 17x17 grid
   // times the box's (u, v) area is then rounding noise against the square of the face's 3D extent
-  // (a face L long and w wide reads about w / L). Such a face has nothing to show, and its (u, v)
+  // (a face L long and w wide reads about w / L), or makes the face narrower than kNoWidth (noise
+  // in a derivative stretched over a long parameter range: a fuzzed patch extrapolated 53 units
+  // below its knots read a width of 3e-12 over 0.017). Such a face has nothing to show, and its (u, v)
   // maps to 3D too poorly for any mesher to work in: refinement chases noise normals (a B-spline
   // collapsed onto a segment took 225k zero-area triangles in 3 s at 0.1%). False for a box
   // without area: the face's boundary encloses none, whatever the surface (the domain says so).
@@ -184,6 +186,7 @@ class SurfaceEval {
   // which the surface has no area; and that ratio on the constructor's 5x5 grid (collapsed() looks
   // closer only when it is small).
   static constexpr double kNoArea = 1e-10;
+  static constexpr double kNoWidth = 1e-9;  // model units: a hundredth of Precision::Confusion()
   double gridArea_ = 0;
   std::vector<double> uCreases_, vCreases_;        // parameters of the crease lines, increasing
   double uPeriod_ = 0, vPeriod_ = 0;               // 0 unless periodic: creases repeat with it
