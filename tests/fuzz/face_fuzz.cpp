@@ -597,6 +597,11 @@ void tessellate(const TopoDS_Shape& shape, const MeshParams& params) {
       std::fprintf(stderr, "face_fuzz: face %u %s, %zu vertices, triangles per level:", f,
                    faceStatusName(t.report(f).status), m.vertexCount());
       for (const auto& level : m.levels) std::fprintf(stderr, " %zu", level.size() / 3);
+      if (!cancelled) {
+        std::fprintf(stderr, "; deviation / tolerance per level:");
+        for (int k = 0; k <= last; ++k)
+          std::fprintf(stderr, " %.3g", measureFaces(t, k, 1)[f].maxDeviation / t.schedule()[std::size_t(k)].chordal);
+      }
       std::fprintf(stderr, "; %s\n", t.report(f).reason.c_str());
     }
   }

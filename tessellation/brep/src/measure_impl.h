@@ -13,9 +13,10 @@ namespace cetview::brep {
 // largest distance of each triangle (SurfaceEval::triangleDeviation); on cones and tori 13 samples
 // per triangle at their closed-form distances; elsewhere the 13 samples projected by Gauss-Newton
 // from their interpolated (u, v), and a sample that would raise the maximum then by damped steps
-// (Levenberg-Marquardt) down to a local minimum of its distance: never under the distance, and over
-// it only where the nearest point lies beyond another local minimum. positions xyz and uv per
-// vertex; idx three per triangle.
+// (Levenberg-Marquardt) down to a local minimum of its distance, and if it still would, again from
+// the surface point nearest to it on a grid over the triangle's (u, v): never under the distance,
+// and over it only where the nearest point lies beyond another local minimum from every start.
+// positions xyz and uv per vertex; idx three per triangle.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
                         std::size_t triangles);
 

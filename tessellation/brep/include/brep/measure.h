@@ -27,7 +27,8 @@ struct FaceQuality {
 // Measures level `level` of every face (each face's last level for -1). The deviation is sampled at
 // 13 points of every triangle (the centroid and a barycentric grid of step 1/4 without the corners),
 // each projected onto the exact surface by Gauss-Newton iteration from its interpolated (u, v), then
-// by damped steps where that would raise the maximum (measure_impl.h). On elementary surfaces it is
+// by damped steps where that would raise the maximum, and from the nearest point of a grid over the
+// triangle's (u, v) where it still would (measure_impl.h). On elementary surfaces it is
 // exact: on planes, cylinders and spheres the largest distance over the triangle in closed form, on
 // cones and tori the samples' distances in closed form.
 std::vector<FaceQuality> measureFaces(const Tessellator& t, int level = -1, unsigned threads = 1);
