@@ -135,5 +135,37 @@ TEST(FoldedSheet, AFoldIntoAPoleDoesNotCascadeAtTheFinalLevel) {
   EXPECT_LE(levels.back().triangles, 100000u);
 }
 
+
+// A 10 x 10 square on the first span of a bilinear sheet that folds back onto itself at the knot
+// u = 1 (its third row of poles is its first; or, periodic, it has two rows and folds at both
+// knots): the square's edge u = 1 lies on the fold line, where the evaluator took the normal from
+// the folded span beyond. Its vertices there faced away from the square (1024 flipped triangles on
+// level 0), and standing triangles on the edge failed the angle against those normals at any height,
+// so the edge was halved down to a tenth of the tolerance (a fuzzed folded sheet: 1024 segments on
+// one straight edge, 33614 triangles where BRepMesh makes 93). Points on the face's side of its
+// parameter box take the span inside it, and the edges the normals of their face's side.
+TEST(FoldedSheet, AnEdgeOnTheFoldLineTakesTheNormalsOfItsFace) {
+  for (const bool periodic : {false, true}) {
+    const int rows = periodic ? 2 : 3;
+    TColgp_Array2OfPnt poles(1, rows, 1, 2);
+    const double rowX[3] = {0, 10, 0};
+    for (int i = 1; i <= rows; ++i)
+      for (int j = 1; j <= 2; ++j) poles.SetValue(i, j, gp_Pnt(rowX[i - 1], 10.0 * (j - 1), 0));
+    TColStd_Array1OfReal uKnots(1, 3), vKnots(1, 2);
+    TColStd_Array1OfInteger uMults(1, 3), vMults(1, 2);
+    for (int k = 1; k <= 3; ++k) uKnots(k) = k - 1, uMults(k) = (periodic || k == 2) ? 1 : 2;
+    vKnots(1) = 0, vKnots(2) = 1, vMults(1) = vMults(2) = 2;
+    Handle(Geom_BSplineSurface) sheet = new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 1, 1, periodic);
+    auto model = test::loadShape(BRepBuilderAPI_MakeFace(sheet, 0, 1, 0, 1, 1e-7).Face(), "square_on_a_fold");
+    ASSERT_TRUE(model);
+    for (double d : {0.01, 0.001}) {
+      SCOPED_TRACE(std::string(periodic ? "periodic" : "clamped") + " at " + std::to_string(d * 100) + "%");
+      auto t = test::tessellateAndCheck(*model, test::relative(d));
+      ASSERT_TRUE(t);
+      for (int k = 0; k <= t->lastLevel(); ++k) EXPECT_LE(t->triangleCount(k), 8u) << "level " << k;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -601,6 +601,9 @@ void tessellate(const TopoDS_Shape& shape, const MeshParams& params) {
         std::fprintf(stderr, "; deviation / tolerance per level:");
         for (int k = 0; k <= last; ++k)
           std::fprintf(stderr, " %.3g", measureFaces(t, k, 1)[f].maxDeviation / t.schedule()[std::size_t(k)].chordal);
+        const FaceQuality q = measureFaces(t, last, 1)[f];
+        std::fprintf(stderr, "; last level: %zu degenerate, %zu flipped (%zu across folds)", q.degenerate, q.flipped,
+                     q.flippedAcrossFolds);
       }
       std::fprintf(stderr, "; %s\n", t.report(f).reason.c_str());
     }

@@ -87,6 +87,12 @@ int BSplineDirect::Direction::span(double t) const {
   return s;
 }
 
+int BSplineDirect::Direction::spanBelow(double t) const {
+  int s = span(t);
+  while (s > degree && !(knots[static_cast<std::size_t>(s)] < t)) --s;  // past empty spans of repeated knots
+  return s;
+}
+
 namespace {
 
 // Cox-de Boor, one degree at a time (The NURBS Book's triangular scheme), for the basis functions

@@ -43,6 +43,10 @@ class BSplineDirect {
   // indices into the flat knot sequence: degree .. poles - 1.
   int uSpan(double u) const { return u_.span(u); }
   int vSpan(double v) const { return v_.span(v); }
+  // The same, but at an interior knot the span that ends there (the one below): the side of a face
+  // whose parameter box ends at the knot, where the surface may be only C0 (a crease or a fold).
+  int uSpanBelow(double u) const { return u_.spanBelow(u); }
+  int vSpanBelow(double v) const { return v_.spanBelow(v); }
 
   // At (u, v) in spans (su, sv) as uSpan(u), vSpan(v) give them.
   gp_Pnt value(double u, double v, int su, int sv) const;
@@ -61,6 +65,7 @@ class BSplineDirect {
     std::vector<int> bucketSpan;
     void index();
     int span(double t) const;
+    int spanBelow(double t) const;
     // Per span: reciprocals of the knot differences its basis functions divide by (see basis()).
     std::vector<double> inverse;
     const double* inverses(int s) const { return inverse.data() + (s - degree) * (degree * (degree + 1) / 2); }

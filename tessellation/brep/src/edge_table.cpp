@@ -29,6 +29,7 @@
 #include "facet_rules.h"
 #include "model_impl.h"
 #include "parallel.h"
+#include "surface_eval.h"
 
 namespace cetview::brep {
 namespace {
@@ -419,11 +420,8 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     // Points along an edge fall in a new knot span of a B-spline face nearly every time: evaluated
     // directly rather than through OpenCASCADE's per-span cache (bspline_direct.h).
     auto d1 = [&](std::size_t k, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
-      if (const BSplineDirect* direct = info.faces[k].scale.direct.get()) {
-        direct->d1(u, v, p, du, dv);
-      } else {
-        surfaces[k].D1(u, v, p, du, dv);
-      }
+      const FaceScale& scale = info.faces[k].scale;
+      faceSideD1(scale.direct.get(), surfaces[k], scale.uMin, scale.uMax, scale.vMin, scale.vMax, u, v, p, du, dv);
     };
     auto pointOn = [&](std::size_t k, double u, double v) {
       if (const BSplineDirect* direct = info.faces[k].scale.direct.get()) return direct->value(u, v);
@@ -557,7 +555,21 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       const UvChord c = uvChord(k, ta, tb);
       if (!(c.len > 0)) return 0.0;
       gp_Pnt tmp;
-      const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
+      gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
+      // A chord on a crease or fold line of the surface inside the face's box (a C0 knot line of a
+      // B-spline where the sheet folds back) may take its normals from the far side (d1 takes the
+      // inside span on the box's sides only): where they point more than 90 degrees from the face's
+      // own side, that side's are used (1e-7 of the chord towards the apexes). Every apex fails
+      // the angle against the far side's normals, and the edge was halved down to a tenth of the
+      // tolerance.
+      auto faceSide = [&](double f, gp_Vec& n) {
+        double au = 0, av = 0;
+        if (!apexAt(k, c, f, 1e-7, side, au, av)) return;
+        const gp_Vec inside = normalAt(k, au, av, tmp);
+        if (inside.Dot(n) < 0) n = inside;
+      };
+      faceSide(0, na);
+      faceSide(1, nb);
       gp_Vec nApex;
       auto spreadAt = [&](double au, double av, gp_Pnt& apex) {
         nApex = normalAt(k, au, av, apex);

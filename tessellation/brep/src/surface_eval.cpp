@@ -330,12 +330,23 @@ bool SurfaceEval::collapsed() const {
   return !(extent2 > 0 && area > kNoArea * extent2 && area > kNoWidth * std::sqrt(extent2));
 }
 
-void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {
-  if (direct_) {
-    direct_->d1(u, v, p, du, dv);
-  } else {
-    surface_.D1(u, v, p, du, dv);
+void faceSideD1(const BSplineDirect* direct, const Adaptor3d_Surface& surface, double uMin, double uMax, double vMin,
+                double vMax, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
+  if (direct) {
+    direct->d1(u, v, u >= uMax ? direct->uSpanBelow(u) : direct->uSpan(u),
+               v >= vMax ? direct->vSpanBelow(v) : direct->vSpan(v), p, du, dv);
+    return;
   }
+  surface.D1(u, v, p, du, dv);
+  // A B-spline through OpenCASCADE (periodic, or of high degree): the derivatives just inside.
+  if (surface.GetType() == GeomAbs_BSplineSurface && (u >= uMax || v >= vMax)) {
+    gp_Pnt inside;
+    surface.D1(u >= uMax ? u - 1e-9 * (uMax - uMin) : u, v >= vMax ? v - 1e-9 * (vMax - vMin) : v, inside, du, dv);
+  }
+}
+
+void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const {
+  faceSideD1(direct_.get(), surface_, uMin, uMax, vMin, vMax, u, v, p, du, dv);
 }
 
 gp_Pnt SurfaceEval::point(double u, double v) const { return direct_ ? direct_->value(u, v) : surface_.Value(u, v); }

@@ -19,6 +19,15 @@
 
 namespace cetview::brep {
 
+// First derivatives at (u, v) on a face whose parameter box ends at uMax and vMax: at or past those
+// sides, a B-spline's derivatives are those of the knot span inside the box. At an interior knot
+// the evaluators take the span above it, and where the surface is only C0 there (a crease, or a
+// sheet folding back) a face ending at the knot got the normals of the surface beyond it: a face on
+// a fold had its vertices on that side facing away (1024 flipped triangles on a level) and its edge
+// there halved to a tenth of the tolerance. `direct`: the face's direct evaluator, if any.
+void faceSideD1(const BSplineDirect* direct, const Adaptor3d_Surface& surface, double uMin, double uMax, double vMin,
+                double vMax, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv);
+
 class SurfaceEval {
  public:
   // `chordal` and `angleRad` (the finest tolerances the face will be meshed to; 0: unknown) set how
