@@ -113,6 +113,7 @@ void FaceMesher::appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* 
   mesh.uv.insert(mesh.uv.end(), {u, v});
   normal_.push_back(n);
   singular_.push_back(regular ? 0 : 1);
+  offset_.push_back(p ? static_cast<float>(p->Distance(s)) : 0.0f);
 }
 
 // Where an edge's pcurve and its 3D curve disagree (an edge of large tolerance, common in IGES),
@@ -141,6 +142,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   base_ = static_cast<std::uint32_t>(mesh.vertexCount());
   normal_.clear();
   singular_.clear();
+  offset_.clear();
   occurrences_.clear();
   records_.clear();
   touched_.clear();
@@ -954,7 +956,10 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1;
       bool forAngle = false, forDeviation = false;
-      if (r->deviation > chordal && (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed))) {
+      // Corners off the surface (edge points of an edge that strays from it within its tolerance)
+      // hold the triangle that far from it whatever its size: the deviation it can reach.
+      const double reachable = chordal + std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)], offset_[m.vertex(t, 2)]});
+      if (r->deviation > reachable && (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed))) {
         at = r->worstSample;
         forDeviation = true;
       } else if (r->flags & TriangleRecord::kCollapsed) {
@@ -995,7 +1000,7 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
       eval_.blend(3, b, cu, cv, u, v);
       // The chordal promise outranks the clearance (which only guards against folds): a triangle
       // too far from the surface is split at its worst sample regardless.
-      const bool tooFar = r->deviation > chordal;
+      const bool tooFar = r->deviation > reachable;
       const bool flipped = (r->flags & TriangleRecord::kFlipped) || r->facetCos < 0;
       // So does a flipped triangle larger than the tolerance (small faces at coarse levels, where a
       // chord's clearance can cover the whole face), unless it stands on a boundary chord: its
@@ -1163,6 +1168,20 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
   }
   std::vector<std::uint32_t> indices = snapshot(mesh);
   if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report);
+  if (!strayReported_) {
+    // Edges that stray from the surface by more than the deflection (within their own tolerance):
+    // the mesh keeps to the shared edge points, so it cannot keep the deflection beside them.
+    // (Coarse levels' edge points are among the final level's: found on any, it holds for all.)
+    const float stray = offset_.empty() ? 0.0f : *std::max_element(offset_.begin(), offset_.end());
+    if (stray > settings_.finalChordal) {
+      char line[160];
+      std::snprintf(line, sizeof line, "its edges stray up to %.3g from its surface, beyond the deflection %.3g: "
+                    "the mesh keeps to them", stray, settings_.finalChordal);
+      repairs_.push_back(line);
+      repaired_ = true;
+      strayReported_ = true;
+    }
+  }
   mesh.levels.push_back(std::move(indices));
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
   report.status = repaired_ ? FaceStatus::kRepaired : FaceStatus::kOk;

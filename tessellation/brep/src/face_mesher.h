@@ -169,6 +169,8 @@ class FaceMesher {
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
   double uPeriod_ = 0, vPeriod_ = 0;  // the surface's periods (0: not periodic that way)
   std::vector<std::uint8_t> singular_;  // normal not defined by first derivatives (pole, apex)
+  std::vector<float> offset_;  // distance from the surface (edge points of an edge that strays from it)
+  bool strayReported_ = false;  // edges straying beyond the final deflection found (a repair note)
   std::vector<Occurrence> occurrences_;
   TriangleRecords records_;
   bool repaired_ = false;
