@@ -655,7 +655,7 @@ TEST(HardCases, EdgeStrayingFromItsFaceWithinItsTolerance) {
   EXPECT_EQ(quality.at(0).flipped, 0u);
   EXPECT_EQ(quality.at(0).degenerate, 0u);
   EXPECT_LE(quality.at(0).maxDeviation, 2e-3 + deflection);
-  EXPECT_LE(quality.at(0).triangles, 2000u);
+  EXPECT_LE(quality.at(0).triangles, 100u);  // 9
 }
 
 }  // namespace
