@@ -1099,8 +1099,12 @@ FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceR
   fallback_ = true;
   std::vector<std::uint32_t> indices;
   std::string failure;
-  const bool ok = meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal,
-                                       settings_.finalAngle, mesh, indices, failure);
+  // A deferred coarse level has made the fallback mesh already (at the same tolerances): BRepMesh
+  // can take seconds on a face whose boundary crosses itself.
+  const bool ok = !deferredIndices_.empty() ||
+                  meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle,
+                                       mesh, indices, failure);
+  if (!deferredIndices_.empty()) indices = deferredIndices_;
   fallbackStatus_ = ok ? FaceStatus::kFallback : FaceStatus::kEmpty;
   report.status = fallbackStatus_;
   report.reason = ok ? why : why + "; fallback failed too: " + failure;
