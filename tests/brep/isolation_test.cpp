@@ -3,6 +3,8 @@
 // clean run gives.
 #include <gtest/gtest.h>
 
+#include <BRepPrimAPI_MakeSphere.hxx>
+
 #include "test_support.h"
 
 namespace cetview::brep {
@@ -90,6 +92,36 @@ TEST(Isolation, AFaceDeferredOnEveryLevelMeshesItsFallbackOnce) {
   ASSERT_GT(m.levels.size(), 1u);
   EXPECT_FALSE(m.levels.back().empty());
   for (std::size_t k = 1; k < m.levels.size(); ++k) EXPECT_EQ(m.levels[k], m.levels[0]) << "level " << k;
+}
+
+// The work bound (MeshParams::maxPointsPerFaceLevel): a face whose refinement would add more points
+// on one level stops there, keeps what it has on that level and the later ones, and says so. (By
+// default the bound is far above any sample model's needs; fuzzed faces whose refinement does not
+// converge ran to millions of points and gigabytes on one level.)
+TEST(Isolation, AFaceStopsAtTheWorkBoundAndSaysSo) {
+  auto model = test::loadShape(BRepPrimAPI_MakeSphere(10).Shape(), "sphere");
+  ASSERT_TRUE(model);
+  MeshParams params = test::relative(0.0001);
+  auto free = test::tessellate(*model, params);
+  params.maxPointsPerFaceLevel = 500;
+  auto bound = test::tessellate(*model, params);
+  ASSERT_TRUE(free && bound);
+  ASSERT_EQ(model->faces().size(), 1u);
+  EXPECT_EQ(free->report(0).status, FaceStatus::kOk);
+  const FaceReport r = bound->report(0);
+  EXPECT_EQ(r.status, FaceStatus::kRepaired);
+  EXPECT_NE(r.reason.find("refinement stopped on level"), std::string::npos) << r.reason;
+  expectWellFormed(*bound, 0);
+  const FaceMesh& m = bound->faceMesh(0);
+  int stopped = -1;
+  for (int k = 0; k <= bound->lastLevel(); ++k) {
+    EXPECT_FALSE(m.levels[std::size_t(k)].empty()) << "level " << k;
+    if (stopped < 0 && bound->triangleCount(k) < free->triangleCount(k)) stopped = k;
+  }
+  ASSERT_GE(stopped, 0) << "the bound stopped no level";
+  // The level it stopped on added at most the bound and one pass beyond; the next levels refine
+  // only their boundary.
+  EXPECT_LE(bound->triangleCount(bound->lastLevel()), free->triangleCount(bound->lastLevel()) / 2);
 }
 
 }  // namespace

@@ -41,6 +41,14 @@ constexpr int kMaxPasses = 400;
 // parametrisation meets a pole, every split made another flipped sliver beside it, down to a
 // thousandth of the tolerance (a fuzzed folded sheet: 2.1 million triangles in 13 s).
 constexpr int kMaxSplitsBelowMinSize = 1024;
+// Points one level's refinement of a face may add: the most of this floor and this many times the
+// points the face had before. Over the 62 bench models a level adds at most 127k (terrain's level
+// 0) and 36 times its points before; fuzzed faces whose refinement does not converge (rational
+// patches with wild weights by a pole, chasing corresponding-point distances) ran to millions of
+// points and gigabytes in minutes on one level. A face so stopped is reported, shows what it has,
+// and is not refined further on later levels.
+constexpr std::size_t kRefineFloor = 250000;
+constexpr std::size_t kRefineGrowth = 256;
 // Triangles per chunk when a pass's measuring is shared out (a triangle takes a few microseconds).
 constexpr std::size_t kMeasureGrain = 64;
 
@@ -890,7 +898,7 @@ bool FaceMesher::allSingular(cet::TriangleId t) const {
   return singular_[m.vertex(t, 0)] && singular_[m.vertex(t, 1)] && singular_[m.vertex(t, 2)];
 }
 
-bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
+bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = (exactDeviation_ ? kExactDeviationMargin : kDeviationMargin) * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
   // The records keep cosines in float (about 6e-8 apart near the tolerance, 5e-7 of the angle):
@@ -900,8 +908,20 @@ bool FaceMesher::refine(const Level& level, FaceMesh& mesh, const std::atomic<bo
   if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
   int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
+  const std::size_t start = cdt_->vertexCount();
+  const std::size_t mostPoints =
+      settings_.maxRefinePoints > 0 ? settings_.maxRefinePoints : std::max(kRefineFloor, kRefineGrowth * start);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+    if (cdt_->vertexCount() - start > mostPoints) {
+      char line[200];
+      std::snprintf(line, sizeof line, "refinement stopped on level %d after %zu points (%zu before it): the level's tolerances "
+                    "are not reached on this face", levelIndex, cdt_->vertexCount() - start, start);
+      repairs_.push_back(line);
+      repaired_ = true;
+      refinementStopped_ = true;
+      return true;
+    }
     const int stamp = ++passStamp_;
     const cet::CetMesh& m = cdt_->mesh();
     points_.clear();
@@ -1166,7 +1186,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     }
     if (!ok && !finalLevel) return deferLevel(k, problem, mesh, report);
     if (!ok) return useFallback(problem, mesh, report);
-    if (!refine(level, mesh, cancel)) return FaceStatus::kCancelled;
+    if (!refinementStopped_ && !refine(k, level, mesh, cancel)) return FaceStatus::kCancelled;
   } catch (const Standard_Failure& e) {
     return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report);
   }

@@ -45,6 +45,7 @@ struct FaceMesherSettings {
   // Meshes do not depend on it.
   WorkSharing* sharing = nullptr;
   bool trace = false;  // print the refinement's split decisions on stderr (traceFace)
+  std::size_t maxRefinePoints = 0;  // MeshParams::maxPointsPerFaceLevel (0: kRefineFloor, kRefineGrowth)
 };
 
 // CETVIEW_DEBUG_REFINE=all traces every face's refinement, =N face N's alone (a debugging aid).
@@ -79,8 +80,10 @@ class FaceMesher {
   bool refinePoles(FaceMesh& mesh, std::string& problem);
   static constexpr int kMaxPoleSegments = 1024;
   static int poleSegments(double length, double typical);
-  // Interior refinement to the level's tolerances; false when cancelled.
-  bool refine(const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
+  // Interior refinement of level `levelIndex` to its tolerances; false when cancelled. Stops (and
+  // sets refinementStopped_) past kRefineFloor / kRefineGrowth new points.
+  bool refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
+  bool refinementStopped_ = false;  // a level's refinement did not converge: later levels keep its interior
   // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
   std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
   FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report);

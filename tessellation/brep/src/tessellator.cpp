@@ -77,6 +77,7 @@ Tessellator::CreateResult Tessellator::create(const Model& model, const MeshPara
   const double angle = params.angleDeg * M_PI / 180.0;
   auto impl = std::make_unique<TessellatorImpl>(model, chordal, angle,
                                                 planLevels(chordal, angle, model.bounds().diagonal(), params.progressive));
+  impl->maxPointsPerFaceLevel = params.maxPointsPerFaceLevel;
   result.tessellator.reset(new Tessellator(std::move(impl)));
   return result;
 }
@@ -152,6 +153,7 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
         settings.reversed = t.model.faces()[face].reversed;
         settings.sharing = &t.sharing;
         settings.trace = traceFace(face);
+        settings.maxRefinePoints = t.maxPointsPerFaceLevel;
         s.mesher = std::make_unique<FaceMesher>(buildFaceTopology(t.model.impl(), face), settings, std::move(s.eval));
       }
       const FaceStatus status = s.mesher->advance(k, t.schedule[static_cast<std::size_t>(k)], t.edges, s.mesh,

@@ -30,6 +30,7 @@ class TessellatorImpl {
   double chordal;
   double angle;
   std::vector<Level> schedule;
+  std::size_t maxPointsPerFaceLevel = 0;  // MeshParams' work bound
   EdgeTable edges;
   std::atomic<int> edgeLevel{-1};
   std::vector<FaceState> faces;

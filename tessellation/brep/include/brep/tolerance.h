@@ -3,6 +3,8 @@
 // error for anything a user could type wrong; resolve() rejects values absurd for the given model.
 #pragma once
 
+#include <cstddef>
+
 #include <string>
 
 namespace cetview::brep {
@@ -17,6 +19,11 @@ struct MeshParams {
   double angleDeg = 20.0; // largest angle between corner normals of a triangle / tangents of an edge
   // Coarse-to-fine levels (DESIGN.md step 5); false makes the final level the only one.
   bool progressive = true;
+  // Work bound: the most points one level's refinement may add to one face; beyond it the face
+  // keeps what it has, and its report says the level's tolerances were not reached there. 0: the
+  // default, the most of 250000 and 256 times the face's points before the level (no face of the
+  // sample models comes near it; faces whose refinement does not converge ran to millions).
+  std::size_t maxPointsPerFaceLevel = 0;
 };
 
 // "0.1%" -> {0.001, relative}; "0.05" or "5e-2" -> {0.05, absolute}. Returns an empty string on
