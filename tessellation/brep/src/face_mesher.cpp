@@ -908,7 +908,9 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
   int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
-  const std::size_t start = cdt_->vertexCount();
+  // Counted from the level's first call: a cancelled level resumes to the mesh an uninterrupted run makes.
+  if (refineLevel_ != levelIndex) refineLevel_ = levelIndex, refineStart_ = cdt_->vertexCount();
+  const std::size_t start = refineStart_;
   const std::size_t mostPoints =
       settings_.maxRefinePoints > 0 ? settings_.maxRefinePoints : std::max(kRefineFloor, kRefineGrowth * start);
   for (int pass = 0; pass < kMaxPasses; ++pass) {

@@ -84,6 +84,8 @@ class FaceMesher {
   // sets refinementStopped_) past kRefineFloor / kRefineGrowth new points.
   bool refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
   bool refinementStopped_ = false;  // a level's refinement did not converge: later levels keep its interior
+  int refineLevel_ = -1;            // the level refine() last ran, and its triangulator's points before it
+  std::size_t refineStart_ = 0;
   // Level index array: inside triangles minus those collapsed on one 3D point, oriented.
   std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
   FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report);
