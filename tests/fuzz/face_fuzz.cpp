@@ -629,7 +629,7 @@ void printCounts(std::FILE* out) {
                "triangles); fallback faces with degenerate %ld, flipped %ld\n",
                c.inputs, c.shapes, c.refused, c.refusedBy[kRefusedEdge], c.refusedBy[kRefusedWire],
                c.refusedBy[kRefusedFace], c.refusedBy[kRefusedThrow], c.refusedBy[kNoRefusal], c.loadErrors, c.createErrors, c.faces, c.ok, c.repaired, c.fallback,
-               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.cetFacesOverFinal, c.ok + c.repaired, c.cetLevelsOver, c.measuredLevels, c.worstRatio,
+               c.empty, c.triangles, c.budgetStops, c.budgetCancels, c.cetFacesOverFinal, c.ok + c.repaired - c.cetStray, c.cetLevelsOver, c.measuredLevels, c.worstRatio,
                c.cetNotMeasurable, c.cetStray, c.cetFacesDegenerate, c.cetDegenerate, c.cetFacesFlipped, c.cetFlipped,
                c.fallbackFacesDegenerate, c.fallbackFacesFlipped);
   if (!firstLoadError.empty()) std::fprintf(out, "face_fuzz: first load error: %s\n", firstLoadError.c_str());
