@@ -194,6 +194,15 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   } catch (const Standard_Failure&) {
     uCreases_.clear(), vCreases_.clear();
   }
+  if (chordal > 0 && angleRad > 0) {
+    // Knots the mesher must take for creases: the band the normal turns in is narrower than its
+    // smallest angular split (a tenth of the tolerance, as BRepMesh's MinSize).
+    try {
+      findSharpKnots(true, uAxis_, 0.1 * chordal, angleRad, uCreases_);
+      findSharpKnots(false, vAxis_, 0.1 * chordal, angleRad, vCreases_);
+    } catch (const Standard_Failure&) {
+    }
+  }
   if (uPeriodic_ && !uCreases_.empty()) uPeriod_ = surface_.UPeriod();
   if (vPeriodic_ && !vCreases_.empty()) vPeriod_ = surface_.VPeriod();
 }
@@ -245,6 +254,56 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   for (std::size_t k = 0; k < slope.size(); ++k) axis.x.push_back(axis.x.back() + (knots[k + 1] - knots[k]) * slope[k]);
   axis.period = periodic ? knots.back() - knots.front() : 0.0;
   axis.periodX = axis.x.back();
+}
+
+void SurfaceEval::findSharpKnots(bool uDir, const Axis& axis, double reach, double angleRad, std::vector<double>& out) const {
+  if (surface_.GetType() != GeomAbs_BSplineSurface || axis.slope.size() < 2) return;
+  const double from = uDir ? uMin : vMin, to = uDir ? uMax : vMax;
+  const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
+  const double cosTurn = std::cos(angleRad);
+  const std::size_t before = out.size();
+  auto at = [&](double t, double w, gp_Pnt& p, gp_Dir& n) {
+    gp_Vec du, dv;
+    if (uDir) {
+      d1(t, w, p, du, dv);
+    } else {
+      d1(w, t, p, du, dv);
+    }
+    const gp_Vec c = du.Crossed(dv);
+    if (!(c.Magnitude() > 1e-12 * du.Magnitude() * dv.Magnitude()) || !(c.Magnitude() > 0)) return false;
+    n = gp_Dir(c);
+    return true;
+  };
+  for (std::size_t k = 1; k < axis.slope.size(); ++k) {
+    const double knot = axis.t[k];
+    if (!(knot > from && knot < to)) continue;
+    const double slow = std::min(axis.slope[k - 1], axis.slope[k]), fast = std::max(axis.slope[k - 1], axis.slope[k]);
+    if (!(fast > kSharpKnotSpeedRatio * slow)) continue;
+    // Step into the fast span until within reach of the knot line, and compare the normals there.
+    const double side = axis.slope[k] > axis.slope[k - 1] ? 1.0 : -1.0;
+    const double width = side > 0 ? axis.t[k + 1] - knot : knot - axis.t[k - 1];
+    bool sharp = false;
+    for (int j = 0; j < 9 && !sharp; ++j) {
+      const double w = lo + (hi - lo) * (j + 0.5) / 9;
+      gp_Pnt p0, p1;
+      gp_Dir n0, n1;
+      if (!at(knot, w, p0, n0)) continue;
+      double step = width;
+      for (int halvings = 0; halvings < 64; ++halvings, step *= 0.5) {
+        const double t = knot + side * step;
+        if (t == knot) break;
+        if (!at(t, w, p1, n1)) continue;
+        if (p0.Distance(p1) > reach) continue;
+        sharp = n0.Dot(n1) < cosTurn;
+        break;
+      }
+    }
+    if (sharp) out.push_back(knot);
+  }
+  if (out.size() > before) {
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
 }
 
 void SurfaceEval::buildConformalSphereAxes() {

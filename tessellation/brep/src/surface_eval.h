@@ -162,6 +162,15 @@ class SurfaceEval {
   };
   // Per-span scales of a B-spline direction where its spans' 3D speeds differ by more than 4x.
   void buildAxis(bool uDir, Axis& axis) const;
+  // Knots of a B-spline direction (scaled by `axis`) that act as creases although the surface is C1
+  // or smoother there: beside a span kSharpKnotSpeedRatio times faster than its neighbour, the
+  // normal turns by more than angleRad within `reach` (3D) of the knot line. The turn is real, but
+  // packed into a band narrower than any split the mesher makes (a fuzzed band whose last v span is
+  // 2e-9 wide against 0.002 for the one before: the normal turns 35 degrees within 1e-12 in v, 1e-5
+  // in 3D); angle splits crept towards such a knot and left slivers along it, flipped (6.8k on one
+  // face). Appended to `out`.
+  static constexpr double kSharpKnotSpeedRatio = 100;
+  void findSharpKnots(bool uDir, const Axis& axis, double reach, double angleRad, std::vector<double>& out) const;
   // A sphere's scaled UV is conformal: x = r u and y = r ln tan(pi/4 + v/2) (Mercator), piecewise
   // linear in spans of latitude across the face (the scale changing by kConformalSpanChange at most
   // in each, at most kConformalSpanRad long: 441 spans from pole to pole) and capped
