@@ -65,5 +65,25 @@ TEST(SharpKnot, IsMeshedWithoutCreepingTowardsIt) {
   EXPECT_LE(t->triangleCount(t->lastLevel()), 8000u) << "25485 when the knot is not taken for a crease";
 }
 
+// tests/brep/data/sharp_knot_band.brep, written by face_fuzz: a band 5400 x 1500 on a bicubic
+// B-spline whose last v span is 2e-9 wide against 0.002 for the one before; the normal turns 35 to
+// 85 degrees within 1e-12 of v (1e-5 in 3D) past the knot. At 0.35% and 14.4 degrees, angle splits
+// crept towards the knot from both sides and left slivers along it: 96435 triangles, 7516 flipped.
+// With the knot a crease, 57573 triangles and 328 flipped (94 across folds); the rest were slivers
+// left by points split beside the knot for the deviation, where the mesh must follow the bend. Put
+// on the knot's line, those points make it an edge of the mesh: 53085 triangles, 29 flipped (23 across
+// folds: triangles with a corner on the knot, whose normal is the slow side's).
+TEST(SharpKnot, DeviationSplitsBesideItGoOntoItsLine) {
+  auto model = test::loadTestData("sharp_knot_band.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.0035128744065219275, 14.355077439536126));
+  ASSERT_TRUE(t);
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  const FaceQuality& last = levels.back();
+  EXPECT_EQ(last.degenerate, 0u);
+  EXPECT_LE(last.flipped - last.flippedAcrossFolds, 20u) << "234 with the split points beside the knot";
+  EXPECT_LE(last.triangles, 60000u);
+}
+
 }  // namespace
 }  // namespace cetview::brep

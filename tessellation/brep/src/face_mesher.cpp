@@ -898,6 +898,41 @@ bool FaceMesher::allSingular(cet::TriangleId t) const {
   return singular_[m.vertex(t, 0)] && singular_[m.vertex(t, 1)] && singular_[m.vertex(t, 2)];
 }
 
+void FaceMesher::ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  double cu[3], cv[3];
+  cet::Point2 q[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t o = base_ + m.vertex(t, i);
+    cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
+    q[i] = cdt_->point(m.vertex(t, i));
+  }
+  for (const bool uDir : {true, false}) {
+    const double* c = uDir ? cu : cv;
+    double knot = 0;
+    if (!eval_.sharpKnotBetween(uDir, std::min({c[0], c[1], c[2]}), std::max({c[0], c[1], c[2]}), uDir ? u : v, knot)) continue;
+    // The knot's line in scaled (u, v) (straight there, as t's edges are) crosses two of t's edges:
+    // take the point of that chord nearest the split point's other coordinate, a little inside.
+    const cet::Point2 at = scaled(uDir ? knot : u, uDir ? v : knot);
+    const double x = uDir ? at.x : at.y;
+    double lo = 1e300, hi = -1e300;
+    for (int i = 0; i < 3; ++i) {
+      const cet::Point2 a = q[i], b = q[(i + 1) % 3];
+      const double xa = uDir ? a.x : a.y, xb = uDir ? b.x : b.y;
+      if ((xa - x) * (xb - x) > 0 || xa == xb) continue;
+      const double f = (x - xa) / (xb - xa);
+      const double y = uDir ? a.y + f * (b.y - a.y) : a.x + f * (b.x - a.x);
+      lo = std::min(lo, y), hi = std::max(hi, y);
+    }
+    if (!(hi > lo)) continue;
+    const double inset = 0.05 * (hi - lo);
+    const double y = std::clamp(uDir ? at.y : at.x, lo + inset, hi - inset);
+    eval_.unscaled(uDir ? cet::Point2{x, y} : cet::Point2{y, x}, u, v);
+    if (uDir) u = knot; else v = knot;
+    return;
+  }
+}
+
 bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
   const double chordal = (exactDeviation_ ? kExactDeviationMargin : kDeviationMargin) * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
@@ -1020,6 +1055,11 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       }
       double u = 0, v = 0;
       eval_.blend(3, b, cu, cv, u, v);
+      // Too far from a surface across a sharp knot: the worst sample sits by the knot's line, where
+      // the surface bends, and a point beside it leaves the bend cut by the triangles on either side
+      // and slivers along it (a fuzzed band: 234 triangles flipped beside the knot). A point on the
+      // line puts the bend on edges of the mesh (6 flipped, besides those across the knot).
+      if (forDeviation) ontoSharpKnot(t, mesh, u, v);
       // The chordal promise outranks the clearance (which only guards against folds): a triangle
       // too far from the surface is split at its worst sample regardless.
       const bool tooFar = r->deviation > reachable;

@@ -137,6 +137,9 @@ class FaceMesher {
   // No corner of t has a first-derivative normal: the surface has no area there (collapsed onto a
   // curve or a point), and its triangles no orientation that a split could put right.
   bool allSingular(cet::TriangleId t) const;
+  // Moves a split point (u, v) of triangle t onto a sharp knot's line (SurfaceEval::findSharpKnots)
+  // that the triangle spans, where that line crosses t (see refine()).
+  void ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const;
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)

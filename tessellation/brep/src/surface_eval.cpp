@@ -198,9 +198,18 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
     // Knots the mesher must take for creases: the band the normal turns in is narrower than its
     // smallest angular split (a tenth of the tolerance, as BRepMesh's MinSize).
     try {
-      findSharpKnots(true, uAxis_, 0.1 * chordal, angleRad, uCreases_);
-      findSharpKnots(false, vAxis_, 0.1 * chordal, angleRad, vCreases_);
+      findSharpKnots(true, uAxis_, 0.1 * chordal, angleRad, uSharpKnots_);
+      findSharpKnots(false, vAxis_, 0.1 * chordal, angleRad, vSharpKnots_);
     } catch (const Standard_Failure&) {
+      uSharpKnots_.clear(), vSharpKnots_.clear();
+    }
+    for (const bool uDir : {true, false}) {
+      std::vector<double>& all = uDir ? uCreases_ : vCreases_;
+      const std::vector<double>& sharp = uDir ? uSharpKnots_ : vSharpKnots_;
+      if (sharp.empty()) continue;
+      all.insert(all.end(), sharp.begin(), sharp.end());
+      std::sort(all.begin(), all.end());
+      all.erase(std::unique(all.begin(), all.end()), all.end());
     }
   }
   if (uPeriodic_ && !uCreases_.empty()) uPeriod_ = surface_.UPeriod();
@@ -261,7 +270,6 @@ void SurfaceEval::findSharpKnots(bool uDir, const Axis& axis, double reach, doub
   const double from = uDir ? uMin : vMin, to = uDir ? uMax : vMax;
   const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
   const double cosTurn = std::cos(angleRad);
-  const std::size_t before = out.size();
   auto at = [&](double t, double w, gp_Pnt& p, gp_Dir& n) {
     gp_Vec du, dv;
     if (uDir) {
@@ -277,6 +285,8 @@ void SurfaceEval::findSharpKnots(bool uDir, const Axis& axis, double reach, doub
   for (std::size_t k = 1; k < axis.slope.size(); ++k) {
     const double knot = axis.t[k];
     if (!(knot > from && knot < to)) continue;
+    const std::vector<double>& creases = uDir ? uCreases_ : vCreases_;  // not C1 there: a crease already
+    if (std::binary_search(creases.begin(), creases.end(), knot)) continue;
     const double slow = std::min(axis.slope[k - 1], axis.slope[k]), fast = std::max(axis.slope[k - 1], axis.slope[k]);
     if (!(fast > kSharpKnotSpeedRatio * slow)) continue;
     // Step into the fast span until within reach of the knot line, and compare the normals there.
@@ -299,10 +309,6 @@ void SurfaceEval::findSharpKnots(bool uDir, const Axis& axis, double reach, doub
       }
     }
     if (sharp) out.push_back(knot);
-  }
-  if (out.size() > before) {
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 }
 
@@ -366,6 +372,16 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
     if (period == 0) break;
   }
   return false;
+}
+
+bool SurfaceEval::sharpKnotBetween(bool uDir, double a, double b, double near, double& knot) const {
+  const std::vector<double>& knots = uDir ? uSharpKnots_ : vSharpKnots_;
+  bool found = false;
+  for (auto it = std::upper_bound(knots.begin(), knots.end(), a); it != knots.end() && *it < b; ++it) {
+    if (!found || std::abs(*it - near) < std::abs(knot - near)) knot = *it;
+    found = true;
+  }
+  return found;
 }
 
 bool SurfaceEval::collapsed() const {

@@ -108,6 +108,10 @@ class SurfaceEval {
   bool crossesCrease(double ua, double va, double ub, double vb) const {
     return crosses(uCreases_, uPeriod_, ua, ub) || crosses(vCreases_, vPeriod_, va, vb);
   }
+  // A sharp knot (findSharpKnots: a crease where the surface is smooth but turns within a band
+  // narrower than any split) strictly between a and b (in u when uDir, else v; a < b), the one
+  // nearest `near`; false when there is none.
+  bool sharpKnotBetween(bool uDir, double a, double b, double near, double& knot) const;
   // True when the unit normal jumps on the UV segment from (ua, va) to (ub, vb), whose ends' normals
   // na and nb oppose (a negative dot product): bisecting towards the half that turns further, the
   // turn stays above 90 degrees down to 2^-kJumpBisections of the segment. A parametrisation that
@@ -168,7 +172,8 @@ class SurfaceEval {
   // packed into a band narrower than any split the mesher makes (a fuzzed band whose last v span is
   // 2e-9 wide against 0.002 for the one before: the normal turns 35 degrees within 1e-12 in v, 1e-5
   // in 3D); angle splits crept towards such a knot and left slivers along it, flipped (6.8k on one
-  // face). Appended to `out`.
+  // face). Knots that are creases already (not C1) are left out. Appended to `out`; the mesher also
+  // puts its deviation splits beside such a knot onto its line (FaceMesher::ontoSharpKnot).
   static constexpr double kSharpKnotSpeedRatio = 100;
   void findSharpKnots(bool uDir, const Axis& axis, double reach, double angleRad, std::vector<double>& out) const;
   // A sphere's scaled UV is conformal: x = r u and y = r ln tan(pi/4 + v/2) (Mercator), piecewise
@@ -207,6 +212,7 @@ class SurfaceEval {
   static constexpr double kNoWidth = 1e-9;  // model units: a hundredth of Precision::Confusion()
   double gridArea_ = 0;
   std::vector<double> uCreases_, vCreases_;        // parameters of the crease lines, increasing
+  std::vector<double> uSharpKnots_, vSharpKnots_;  // those of them that are sharp knots, increasing
   double uPeriod_ = 0, vPeriod_ = 0;               // 0 unless periodic: creases repeat with it
 };
 
