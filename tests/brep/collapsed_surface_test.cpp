@@ -27,6 +27,21 @@ TEST(CollapsedSurface, HalfCollapsedToAPointIsNotRefinedThere) {
   for (const FaceQuality& q : test::expectEveryLevelWithinTolerance(*t, 0)) EXPECT_LE(q.triangles, 20000u);
 }
 
+// collapsed_bilinear.brep is a bilinear patch of 3 x 2 spans whose first row of poles is one point
+// and whose others are all a second point but one pole: two thirds of its box collapse onto that
+// point, and most of the rest onto the segment between the two, where Su and Sv are parallel and
+// their cross product is rounding noise. The edge along that segment (a straight line) was halved
+// for the noise, standing triangles on it failing the angle against noise normals, down to a
+// tenth of the tolerance: 3973 points on it at the last level, and 4095 triangles, 4041 of them of
+// no area (BRepMesh: none there). The edge table takes no normal where the surface has no area.
+TEST(CollapsedSurface, AnEdgeBesideAPatchCollapsedOntoASegmentIsNotHalvedForNoise) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("collapsed_bilinear.brep", test::relative(0.0014130215179088082, 53.703135728999769));
+  ASSERT_FALSE(levels.empty());
+  EXPECT_LE(levels.back().triangles, 400u) << "4095 with the edge halved for noise";
+  EXPECT_LE(levels.back().degenerate, 100u) << "4041 with the edge halved for noise";
+}
+
 // Faces whose surface has no area anywhere: reported empty, with the reason, on every level.
 // - collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on
 //   one segment, bounded by two degenerate edges and the segment twice. Its vertices' normals were

@@ -46,6 +46,14 @@ std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& pa
   return std::move(created.tessellator);
 }
 
+std::vector<FaceQuality> testDataEveryLevel(const std::string& file, const MeshParams& params) {
+  auto model = loadTestData(file);
+  if (!model) return {};
+  auto t = tessellate(*model, params);
+  if (!t) return {};
+  return expectEveryLevelWithinTolerance(*t, 0);
+}
+
 std::vector<FaceQuality> expectEveryLevelWithinTolerance(const Tessellator& t, FaceId f) {
   std::vector<FaceQuality> levels;
   for (int k = 0; k <= t.lastLevel(); ++k) {

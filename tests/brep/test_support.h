@@ -48,6 +48,9 @@ std::unique_ptr<Model> loadTestData(const std::string& file);
 std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params);
 // Face f's measures on each level, each level's deviation expected within its chordal tolerance.
 std::vector<FaceQuality> expectEveryLevelWithinTolerance(const Tessellator& t, FaceId f);
+// The same for the first face of a model from tests/brep/data tessellated with `params`; empty,
+// with a test failure, where it does not load or tessellate.
+std::vector<FaceQuality> testDataEveryLevel(const std::string& file, const MeshParams& params);
 
 // Checks of the final level only (runs with many levels at fine deflections).
 CheckOptions finalLevelOnly();

@@ -455,10 +455,17 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       c.len = std::hypot(c.dx, c.dy);
       return c;
     };
+    // Face k's normal (not unit) at (u, v); none (zero) where the surface has no area there, as in
+    // normalsAt: a patch collapsed onto a segment has Su parallel to Sv, and the direction of their
+    // cross product is rounding noise (a fuzzed face's straight edge beside such a patch was halved
+    // down to a tenth of the tolerance for the noise: 3973 points on one edge, 4041 triangles of no
+    // area).
     auto normalAt = [&](std::size_t k, double u, double v, gp_Pnt& p) {
       gp_Vec du, dv;
       d1(k, u, v, p, du, dv);
-      return du.Crossed(dv);
+      const gp_Vec n = du.Crossed(dv);
+      if (n.Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude()) return gp_Vec(0, 0, 0);
+      return n;
     };
     // A facet on the chord (pa, pb) with apex `apex` nearly edge-on to the surface (the face
     // mesher's fold rule), or flipped, against its corners' normals; not decided where one has none.
