@@ -42,6 +42,23 @@ TEST(CollapsedSurface, AnEdgeBesideAPatchCollapsedOntoASegmentIsNotHalvedForNois
   EXPECT_LE(levels.back().degenerate, 100u) << "4041 with the edge halved for noise";
 }
 
+// collapsed_fan.brep is a bilinear-by-cubic B-spline fanning between two points 1e-3 apart: its
+// first row of poles is one point and most of the others another, so that most of its parameter
+// box collapses onto that point. Beside the collapsed part the surface's speed changes by orders of
+// magnitude and the refinement's Gauss-Newton steps stop short of the foot: a triangle standing on a
+// boundary chord from the pole read the same distance whatever its apex, and its splits piled
+// points up against the chord at 5.6% (one level): 91916 triangles, 19643 of them flipped, where the
+// measure finds the face within 0.22 of the tolerance. A triangle with a corner at a pole that reads
+// too far is checked by the measure itself before it is split: 1908 triangles, 13 flipped, all of
+// them across folds.
+TEST(CollapsedSurface, AFanCollapsedOntoAPointIsNotSplitOnAndOnBesideIt) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("collapsed_fan.brep", test::relative(0.055875193901701303, 27.75532158388647));
+  ASSERT_FALSE(levels.empty());
+  EXPECT_LE(levels.back().triangles, 5000u) << "91916 when the samples' short projections decide";
+  EXPECT_EQ(levels.back().flipped, levels.back().flippedAcrossFolds) << "19643 flipped";
+}
+
 // Faces whose surface has no area anywhere: reported empty, with the reason, on every level.
 // - collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on
 //   one segment, bounded by two degenerate edges and the segment twice. Its vertices' normals were

@@ -137,6 +137,9 @@ class FaceMesher {
   // No corner of t has a first-derivative normal: the surface has no area there (collapsed onto a
   // curve or a point), and its triangles no orientation that a split could put right.
   bool allSingular(cet::TriangleId t) const;
+  // Whether triangle t, with a corner at a pole and read too far from the surface (r), is within
+  // `reachable` by the deviation measure itself (measure_impl.h).
+  bool withinByTheMeasure(cet::TriangleId t, const FaceMesh& mesh, const TriangleRecord& r, double reachable) const;
   // Moves a split point (u, v) of triangle t onto a sharp knot's line (SurfaceEval::findSharpKnots)
   // that the triangle spans, where that line crosses t (see refine()).
   void ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const;
