@@ -59,6 +59,24 @@ TEST(CollapsedSurface, AFanCollapsedOntoAPointIsNotSplitOnAndOnBesideIt) {
   EXPECT_EQ(levels.back().flipped, levels.back().flippedAcrossFolds) << "19643 flipped";
 }
 
+// fan_onto_straight_side.brep is a flat B-spline sheet whose last v span, 5e-6 wide against 1,
+// fans its row onto one corner point (the pole at v = 1): the side u = umax runs straight into
+// that point, one boundary chord 57 units long. A triangle from a point inside onto that chord has
+// its corners in line through the pole and counts as flipped (its facet is noise), but bisecting
+// it made a triangle on the same chord with its apex nearer to it, in line again, on and on, the
+// chord keeping it above the minimum size: at 0.08% 66168 triangles, 23578 of no area, in 5 s
+// (BRepMesh: 103; now 114). Such a triangle on a chord into a pole is not split as flipped.
+TEST(CollapsedSurface, AFanOntoAStraightSideIsNotSplitOnAndOnAlongIt) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("fan_onto_straight_side.brep", test::relative(0.00079688600635591966, 26.06507972838941));
+  ASSERT_FALSE(levels.empty());
+  for (const FaceQuality& q : levels) {
+    EXPECT_LE(q.triangles, 1000u) << "66168 on the last level with the splits along the chord";
+    EXPECT_EQ(q.degenerate, 0u) << "23578 on the last level with the splits along the chord";
+    EXPECT_EQ(q.flipped, 0u);
+  }
+}
+
 // Faces whose surface has no area anywhere: reported empty, with the reason, on every level.
 // - collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on
 //   one segment, bounded by two degenerate edges and the segment twice. Its vertices' normals were

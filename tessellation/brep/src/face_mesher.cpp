@@ -581,7 +581,7 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     } else if ((r.flags & TriangleRecord::kPoleCorner) && n.Magnitude() <= 1e-4 * longest * longest) {
       // Corners in line through a pole (a fan from the pole's row onto a straight edge out of the
       // pole, in line up to the row's width): the facet's normal is noise, whatever it says.
-      r.flags |= TriangleRecord::kFlipped;
+      r.flags |= TriangleRecord::kFlipped | TriangleRecord::kInLine;
     } else if (ref.Magnitude() > 0 && !acrossCrease) {  // corner normals from both sides of a crease: no reference
       r.facetCos = static_cast<float>(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()));
     }
@@ -894,6 +894,14 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
   return m.isConstrained(t, 0) || m.isConstrained(t, 1) || m.isConstrained(t, 2);
 }
 
+bool FaceMesher::inLineOnChordIntoPole(cet::TriangleId t, const TriangleRecord& r) const {
+  if (!(r.flags & TriangleRecord::kInLine)) return false;
+  const cet::CetMesh& m = cdt_->mesh();
+  for (int i = 0; i < 3; ++i)
+    if (m.isConstrained(t, i) && (singular_[m.vertex(t, (i + 1) % 3)] || singular_[m.vertex(t, (i + 2) % 3)])) return true;
+  return false;
+}
+
 bool FaceMesher::allSingular(cet::TriangleId t) const {
   const cet::CetMesh& m = cdt_->mesh();
   return singular_[m.vertex(t, 0)] && singular_[m.vertex(t, 1)] && singular_[m.vertex(t, 2)];
@@ -1049,6 +1057,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && !allSingular(t) &&
+                 !inLineOnChordIntoPole(t, *r) &&
                  (r->longest > minSize || (splitsBelowMinSize(*r) && r->longest > 1e-3 * level.chordal &&
                                            belowMinSize < kMaxSplitsBelowMinSize))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread

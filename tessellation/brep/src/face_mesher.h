@@ -134,6 +134,11 @@ class FaceMesher {
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
   bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
+  // Whether t, its corners in line through a pole (TriangleRecord::kInLine), stands on a boundary
+  // chord with an end at a pole or apex. Bisecting such a triangle only makes another on the same
+  // chord with its apex nearer to it, in line again: no split puts it right (a fuzzed fan onto a
+  // straight side took 66168 triangles, 23578 of no area, splitting them as flipped).
+  bool inLineOnChordIntoPole(cet::TriangleId t, const TriangleRecord& r) const;
   // No corner of t has a first-derivative normal: the surface has no area there (collapsed onto a
   // curve or a point), and its triangles no orientation that a split could put right.
   bool allSingular(cet::TriangleId t) const;
