@@ -8,11 +8,20 @@
 // whose corner sits at a subnormal v) the level's tolerance.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <ostream>
+#include <string>
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
 
 #include "brep/measure.h"
 #include "brep/model.h"
 #include "brep/tessellator.h"
+#include "measure_impl.h"
 #include "test_support.h"
 
 namespace cetview::brep {
@@ -39,6 +48,35 @@ INSTANTIATE_TEST_SUITE_P(FuzzedFaces, UnevenRationalPatch,
                          testing::Values(UnevenPatch{"uneven_rational_a.brep", 0.0034381443112038895, 46.451209277485312},
                                          UnevenPatch{"uneven_rational_b.brep", 0.00022715833633490608, 40.050278477149611},
                                          UnevenPatch{"uneven_pole_walk.brep", 0.00054744222549954612, 54.084153505760284}));
+
+// seam_beside_tiny_spans.brep is a surface periodic in u whose last u spans, just before the seam,
+// are a millionth wide: the surface turns sharply across the seam. A sample on a triangle's chord
+// along the seam has its foot on the seam, a few millionths of v away from its interpolated start,
+// but every Gauss-Newton and damped step also stepped across the seam into those spans, far from
+// the sample, and the distance stayed where it started. The measure also takes damped steps held
+// inside the face's parameter box, which slide along the seam instead.
+TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  ASSERT_TRUE(BRepTools::Read(shape, (std::string(CETVIEW_BREP_TEST_DATA) + "/seam_beside_tiny_spans.brep").c_str(), builder));
+  const SurfaceEval eval(TopoDS::Face(TopExp_Explorer(shape, TopAbs_FACE).Current()));
+  // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
+  // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface
+  // comes within 0.037 of the seam chord's midpoint; the measure read up to 0.0965 on the chord
+  // (1.75x the level's tolerance).
+  const double uv[6] = {2.22044604925e-16, -999.999, 0, -999.999125, 0.0416666666667, -999.9990625};
+  double positions[9];
+  for (int i = 0; i < 3; ++i) {
+    const gp_Pnt p = eval.point(uv[2 * i], uv[2 * i + 1]);
+    positions[3 * i] = p.X(), positions[3 * i + 1] = p.Y(), positions[3 * i + 2] = p.Z();
+  }
+  const std::uint32_t idx[3] = {0, 1, 2};
+  EXPECT_LT(measureDeviation(eval, positions, uv, idx, 1), 0.055) << "0.0965 when no step could stay by the seam";
+}
+
+TEST(SeamBesideTinySpans, EveryLevelMeasuresWithinItsTolerance) {
+  test::testDataEveryLevel("seam_beside_tiny_spans.brep", test::relative(0.00098784739829485782, 50.430075532158384));
+}
 
 }  // namespace
 }  // namespace cetview::brep

@@ -528,7 +528,7 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
   return d;
 }
 
-double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter) const {
+double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter, bool inFaceBox) const {
   gp_Pnt s;
   gp_Vec du, dv;
   d1(u, v, s, du, dv);
@@ -549,8 +549,12 @@ double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int max
         continue;
       }
       double nu = u + (ru * dc - rv * b) / det, nv = v + (da * rv - b * ru) / det;
-      if (!uPeriodic_) nu = std::clamp(nu, su0_, su1_);
-      if (!vPeriodic_) nv = std::clamp(nv, sv0_, sv1_);
+      if (inFaceBox) {
+        nu = std::clamp(nu, uMin, uMax), nv = std::clamp(nv, vMin, vMax);
+      } else {
+        if (!uPeriodic_) nu = std::clamp(nu, su0_, su1_);
+        if (!vPeriodic_) nv = std::clamp(nv, sv0_, sv1_);
+      }
       gp_Pnt s2;
       gp_Vec du2, dv2;
       d1(nu, nv, s2, du2, dv2);

@@ -57,7 +57,10 @@ class SurfaceEval {
   // The same by Levenberg-Marquardt: each step is damped until it brings the point closer, so the
   // iterates descend to a local minimum of the distance even where Gauss-Newton overshoots (across a
   // pole or a fold of the parametrisation, where Su or Sv vanishes). Slower: for the measure only.
-  double projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter) const;
+  // With `inFaceBox`, steps stop at the face's parameter box (uMin..vMax) in every direction, periodic
+  // ones included: beside a seam the surface turns sharply across, steps that crossed it ran into
+  // the far side's spans and no damping brought them back (see measureDeviation).
+  double projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter, bool inFaceBox = false) const;
   // The refinement's estimate of the same: on planes, cylinders, cones, spheres and tori the exact
   // distance to the surface in closed form; otherwise Gauss-Newton that stops once a step moves the
   // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
