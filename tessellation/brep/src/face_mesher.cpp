@@ -43,13 +43,16 @@ constexpr int kMaxPasses = 400;
 // thousandth of the tolerance (a fuzzed folded sheet: 2.1 million triangles in 13 s).
 constexpr int kMaxSplitsBelowMinSize = 1024;
 // Points one level's refinement of a face may add: the most of this floor and this many times the
-// points the face had before. Over the 62 bench models a level adds at most 127k (terrain's level
-// 0) and 36 times its points before; fuzzed faces whose refinement does not converge (rational
-// patches with wild weights by a pole, chasing corresponding-point distances) ran to millions of
-// points and gigabytes in minutes on one level. A face so stopped is reported, shows what it has,
-// and is not refined further on later levels.
+// points the face had before, up to the ceiling. Over the 62 bench models a level adds at most 127k
+// (terrain's level 0) and 36 times its points before; terrain at 0.001% has 617k points in all.
+// Fuzzed faces whose refinement does not converge (rational patches with wild weights by a pole,
+// chasing corresponding-point distances) ran to millions of points and gigabytes in minutes on one
+// level, and a face that starts from 19k boundary points (an edge far off its surface) was allowed
+// 4.9 million. A face so stopped is reported, shows what it has, and is not refined further on
+// later levels.
 constexpr std::size_t kRefineFloor = 250000;
 constexpr std::size_t kRefineGrowth = 256;
+constexpr std::size_t kRefineCeiling = 1000000;
 // Triangles per chunk when a pass's measuring is shared out (a triangle takes a few microseconds).
 constexpr std::size_t kMeasureGrain = 64;
 
@@ -84,6 +87,11 @@ bool splitsBelowMinSize(const TriangleRecord& r) {
 }
 
 }  // namespace
+
+std::size_t refinePointBound(std::size_t pointsBefore, std::size_t requested) {
+  if (requested > 0) return requested;
+  return std::clamp(kRefineGrowth * pointsBefore, kRefineFloor, kRefineCeiling);
+}
 
 bool traceFace(FaceId face) {
   static const char* const which = std::getenv("CETVIEW_DEBUG_REFINE");
@@ -977,8 +985,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   // Counted from the level's first call: a cancelled level resumes to the mesh an uninterrupted run makes.
   if (refineLevel_ != levelIndex) refineLevel_ = levelIndex, refineStart_ = cdt_->vertexCount();
   const std::size_t start = refineStart_;
-  const std::size_t mostPoints =
-      settings_.maxRefinePoints > 0 ? settings_.maxRefinePoints : std::max(kRefineFloor, kRefineGrowth * start);
+  const std::size_t mostPoints = refinePointBound(start, settings_.maxRefinePoints);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
     if (cdt_->vertexCount() - start > mostPoints) {

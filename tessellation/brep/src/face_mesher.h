@@ -45,11 +45,16 @@ struct FaceMesherSettings {
   // Meshes do not depend on it.
   WorkSharing* sharing = nullptr;
   bool trace = false;  // print the refinement's split decisions on stderr (traceFace)
-  std::size_t maxRefinePoints = 0;  // MeshParams::maxPointsPerFaceLevel (0: kRefineFloor, kRefineGrowth)
+  std::size_t maxRefinePoints = 0;  // MeshParams::maxPointsPerFaceLevel (0: refinePointBound's default)
 };
 
 // CETVIEW_DEBUG_REFINE=all traces every face's refinement, =N face N's alone (a debugging aid).
 bool traceFace(FaceId face);
+
+// The most points one level's refinement may add to a face that had `pointsBefore` points: the
+// `requested` bound (MeshParams::maxPointsPerFaceLevel), or by default 256 times the points before,
+// at least 250 thousand and at most a million.
+std::size_t refinePointBound(std::size_t pointsBefore, std::size_t requested);
 
 class FaceMesher {
  public:
@@ -81,7 +86,7 @@ class FaceMesher {
   static constexpr int kMaxPoleSegments = 1024;
   static int poleSegments(double length, double typical);
   // Interior refinement of level `levelIndex` to its tolerances; false when cancelled. Stops (and
-  // sets refinementStopped_) past kRefineFloor / kRefineGrowth new points.
+  // sets refinementStopped_) past refinePointBound() new points.
   bool refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
   bool refinementStopped_ = false;  // a level's refinement did not converge: later levels keep its interior
   int refineLevel_ = -1;            // the level refine() last ran, and its triangulator's points before it

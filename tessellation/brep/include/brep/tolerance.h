@@ -21,8 +21,9 @@ struct MeshParams {
   bool progressive = true;
   // Work bound: the most points one level's refinement may add to one face; beyond it the face
   // keeps what it has, and its report says the level's tolerances were not reached there. 0: the
-  // default, the most of 250000 and 256 times the face's points before the level (no face of the
-  // sample models comes near it; faces whose refinement does not converge ran to millions).
+  // default, 256 times the face's points before the level, at least 250 thousand and at most a
+  // million (no face of the sample models comes near it; faces whose refinement does not converge
+  // ran to millions).
   std::size_t maxPointsPerFaceLevel = 0;
 };
 
