@@ -144,20 +144,30 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
       if (bheap) r.brepmesh_peak_mb = bheap->stopMb();
     }
 
+    // The progressive runs, on N threads and on one, alternate the same way. (One run each, the
+    // threaded one first, had the threaded run pay the process's first progressive run: bearing.iges
+    // read 61.5 ms on two threads against 53.2 on one, where best of rounds gives 24 and 46.)
     MeshParams progressive = options.params;
     progressive.progressive = true;
-    {
-      auto threaded = Tessellator::create(model, progressive).tessellator;
+    r.cetview_ms_threads = r.cetview_ms = INFINITY;
+    std::unique_ptr<Tessellator> tess;
+    const auto rounds1 = std::chrono::steady_clock::now();
+    for (int round = 0; round < kTimedRounds && (round == 0 || msSince(rounds1) < kRoundBudgetMs); ++round) {
+      {
+        auto threaded = Tessellator::create(model, progressive).tessellator;
+        t0 = std::chrono::steady_clock::now();
+        threaded->run(r.threads);
+        r.cetview_ms_threads = std::min(r.cetview_ms_threads, msSince(t0));
+      }
+      tess.reset();
+      std::optional<HeapPeak> heap;
+      if (round == 0) heap.emplace();
+      tess = Tessellator::create(model, progressive).tessellator;
       t0 = std::chrono::steady_clock::now();
-      threaded->run(r.threads);
-      r.cetview_ms_threads = msSince(t0);
+      tess->run(1);
+      r.cetview_ms = std::min(r.cetview_ms, msSince(t0));
+      if (heap) r.cetview_peak_mb = heap->stopMb();
     }
-    HeapPeak heap;
-    auto tess = Tessellator::create(model, progressive).tessellator;
-    t0 = std::chrono::steady_clock::now();
-    tess->run(1);
-    r.cetview_ms = msSince(t0);
-    r.cetview_peak_mb = heap.stopMb();
     r.levels = tess->schedule().size();
     r.cetview_triangles = tess->triangleCount(tess->lastLevel());
     for (FaceId f = 0; f < r.faces; ++f) {
