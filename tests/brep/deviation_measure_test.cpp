@@ -55,27 +55,59 @@ INSTANTIATE_TEST_SUITE_P(FuzzedFaces, UnevenRationalPatch,
 // but every Gauss-Newton and damped step also stepped across the seam into those spans, far from
 // the sample, and the distance stayed where it started. The measure also takes damped steps held
 // inside the face's parameter box, which slide along the seam instead.
-TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
+// The first face of a test data file, read as OpenCASCADE writes it.
+TopoDS_Face firstFace(const std::string& file) {
   TopoDS_Shape shape;
   BRep_Builder builder;
-  ASSERT_TRUE(BRepTools::Read(shape, (std::string(CETVIEW_BREP_TEST_DATA) + "/seam_beside_tiny_spans.brep").c_str(), builder));
-  const SurfaceEval eval(TopoDS::Face(TopExp_Explorer(shape, TopAbs_FACE).Current()));
-  // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
-  // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface
-  // comes within 0.037 of the seam chord's midpoint; the measure read up to 0.0965 on the chord
-  // (1.75x the level's tolerance).
-  const double uv[6] = {2.22044604925e-16, -999.999, 0, -999.999125, 0.0416666666667, -999.9990625};
+  if (!BRepTools::Read(shape, (std::string(CETVIEW_BREP_TEST_DATA) + "/" + file).c_str(), builder)) return {};
+  TopExp_Explorer faces(shape, TopAbs_FACE);
+  return faces.More() ? TopoDS::Face(faces.Current()) : TopoDS_Face();
+}
+
+// The measure's reading of the triangle with these corner parameters (corners on the surface).
+double measuredTriangle(const SurfaceEval& eval, const double uv[6]) {
   double positions[9];
   for (int i = 0; i < 3; ++i) {
     const gp_Pnt p = eval.point(uv[2 * i], uv[2 * i + 1]);
     positions[3 * i] = p.X(), positions[3 * i + 1] = p.Y(), positions[3 * i + 2] = p.Z();
   }
   const std::uint32_t idx[3] = {0, 1, 2};
-  EXPECT_LT(measureDeviation(eval, positions, uv, idx, 1), 0.055) << "0.0965 when no step could stay by the seam";
+  return measureDeviation(eval, positions, uv, idx, 1);
+}
+
+TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
+  const TopoDS_Face face = firstFace("seam_beside_tiny_spans.brep");
+  ASSERT_FALSE(face.IsNull());
+  const SurfaceEval eval(face);
+  // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
+  // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface
+  // comes within 0.037 of the seam chord's midpoint; the measure read up to 0.0965 on the chord
+  // (1.75x the level's tolerance).
+  const double uv[6] = {2.22044604925e-16, -999.999, 0, -999.999125, 0.0416666666667, -999.9990625};
+  EXPECT_LT(measuredTriangle(eval, uv), 0.055) << "0.0965 when no step could stay by the seam";
 }
 
 TEST(SeamBesideTinySpans, EveryLevelMeasuresWithinItsTolerance) {
   test::testDataEveryLevel("seam_beside_tiny_spans.brep", test::relative(0.00098784739829485782, 50.430075532158384));
+}
+
+// ellipse_past_the_knots.brep's first face is bounded by an ellipse reaching 0.18 of u and 0.54 of
+// v past its B-spline surface's knots (spans 0.28 and 1 wide), where the surface is extrapolated:
+// the mesh's corners lie on that extrapolation. Every projection stopped at the knots, and a
+// sliver there read 134.5 (4.93x the level's tolerance of 27.3) where a dense grid over the
+// extrapolated surface finds it 5.5 away; the measure's last damped steps may go as far as the
+// triangle's own corners.
+TEST(FacePastItsKnots, ATriangleOnTheExtrapolatedSurfaceMeasuresItsDistanceToIt) {
+  const TopoDS_Face face = firstFace("ellipse_past_the_knots.brep");
+  ASSERT_FALSE(face.IsNull());
+  const SurfaceEval eval(face);
+  const double uv[6] = {26.335810123503045, 849.70078483817008, 26.33725742236188, 849.71445272046481,
+                        26.334362824644273, 849.68711695587581};
+  EXPECT_LT(measuredTriangle(eval, uv), 27.3) << "134.5 when every step stopped at the knots";
+}
+
+TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
+  test::testDataEveryLevel("ellipse_past_the_knots.brep", test::relative(0.00056717801270646954, 34.027847714961467));
 }
 
 }  // namespace

@@ -528,7 +528,14 @@ double SurfaceEval::project(const gp_Pnt& m, double& u, double& v, int maxIter, 
   return d;
 }
 
-double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter, bool inFaceBox) const {
+void SurfaceEval::triangleBox(const double cu[3], const double cv[3], double box[4]) const {
+  const double lowU = std::min({cu[0], cu[1], cu[2]}), highU = std::max({cu[0], cu[1], cu[2]});
+  const double lowV = std::min({cv[0], cv[1], cv[2]}), highV = std::max({cv[0], cv[1], cv[2]});
+  box[0] = std::min(uPeriodic_ ? uMin : su0_, lowU), box[1] = std::max(uPeriodic_ ? uMax : su1_, highU);
+  box[2] = std::min(vPeriodic_ ? vMin : sv0_, lowV), box[3] = std::max(vPeriodic_ ? vMax : sv1_, highV);
+}
+
+double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter, const double* box) const {
   gp_Pnt s;
   gp_Vec du, dv;
   d1(u, v, s, du, dv);
@@ -549,8 +556,8 @@ double SurfaceEval::projectDamped(const gp_Pnt& m, double& u, double& v, int max
         continue;
       }
       double nu = u + (ru * dc - rv * b) / det, nv = v + (da * rv - b * ru) / det;
-      if (inFaceBox) {
-        nu = std::clamp(nu, uMin, uMax), nv = std::clamp(nv, vMin, vMax);
+      if (box) {
+        nu = std::clamp(nu, box[0], box[1]), nv = std::clamp(nv, box[2], box[3]);
       } else {
         if (!uPeriodic_) nu = std::clamp(nu, su0_, su1_);
         if (!vPeriodic_) nv = std::clamp(nv, sv0_, sv1_);

@@ -57,10 +57,16 @@ class SurfaceEval {
   // The same by Levenberg-Marquardt: each step is damped until it brings the point closer, so the
   // iterates descend to a local minimum of the distance even where Gauss-Newton overshoots (across a
   // pole or a fold of the parametrisation, where Su or Sv vanishes). Slower: for the measure only.
-  // With `inFaceBox`, steps stop at the face's parameter box (uMin..vMax) in every direction, periodic
-  // ones included: beside a seam the surface turns sharply across, steps that crossed it ran into
-  // the far side's spans and no damping brought them back (see measureDeviation).
-  double projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter, bool inFaceBox = false) const;
+  // With a `box` (u0, u1, v0, v1), steps stop at it in every direction, periodic ones included, and
+  // only there: beside a seam the surface turns sharply across, steps that crossed it ran into the
+  // far side's spans and no damping brought them back; on a face reaching past its surface's
+  // knots, steps stopped at the knots could not reach the extrapolated part (see measureDeviation).
+  double projectDamped(const gp_Pnt& m, double& u, double& v, int maxIter, const double* box = nullptr) const;
+  // The box around a triangle (corner parameters cu, cv) for projectDamped: in a periodic direction
+  // the face's parameter box, in another the surface's bounds, each widened to the triangle's
+  // corners (a face may reach past its surface's knots, where the surface is extrapolated; a foot
+  // found further out would be on no part of the face).
+  void triangleBox(const double cu[3], const double cv[3], double box[4]) const;
   // The refinement's estimate of the same: on planes, cylinders, cones, spheres and tori the exact
   // distance to the surface in closed form; otherwise Gauss-Newton that stops once a step moves the
   // foot by less than a tenth of the distance (usually one D1 and one D0 evaluation; more near poles).
