@@ -82,8 +82,9 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
         if (ds > worst) ds = std::min(ds, eval.projectDamped(gp_Pnt(m), su, sw, 50));
         d = std::min(d, ds);
       }
-      // And if it still would, by damped steps held inside a box around the triangle (the face's
-      // parameter box, widened to the triangle: SurfaceEval::triangleBox) and nowhere else. Beside
+      // And if it still would, by damped steps held inside a box around the triangle and nowhere
+      // else (SurfaceEval::triangleBox: the face's parameter box in a periodic direction, the
+      // surface's bounds in another, each widened to the triangle's corners). Beside
       // the seam of a periodic surface that turns sharply across it (spans a millionth wide just
       // past the seam), every step crossed the seam into the far side's spans, and the distance
       // stayed where it started (a fuzzed face's seam chord read 0.0965, 1.75x its tolerance, where
