@@ -48,7 +48,7 @@ constexpr int kMaxSplitsBelowMinSize = 1024;
 // Fuzzed faces whose refinement does not converge (rational patches with wild weights by a pole,
 // chasing corresponding-point distances) ran to millions of points and gigabytes in minutes on one
 // level, and a face that starts from 19k boundary points (an edge far off its surface) was allowed
-// 4.9 million. A face so stopped is reported, shows what it has, and is not refined further on
+// 5.1 million. A face so stopped is reported, shows what it has, and is not refined further on
 // later levels.
 constexpr std::size_t kRefineFloor = 250000;
 constexpr std::size_t kRefineGrowth = 256;
