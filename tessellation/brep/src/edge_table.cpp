@@ -427,6 +427,12 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       if (const BSplineDirect* direct = info.faces[k].scale.direct.get()) return direct->value(u, v);
       return surfaces[k].Value(u, v);
     };
+    // Su x Sv, or none (zero) where the surface has no area there: Su parallel to Sv (a pole, or a
+    // patch collapsed onto a segment), where the direction of their cross product is rounding noise.
+    auto crossOrNone = [](const gp_Vec& du, const gp_Vec& dv) {
+      const gp_Vec n = du.Crossed(dv);
+      return n.Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude() ? gp_Vec(0, 0, 0) : n;
+    };
     auto normalsAt = [&](double t, gp_Vec* n) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceUse& use = info.faces[k];
@@ -434,10 +440,8 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
         gp_Pnt p;
         gp_Vec du, dv;
         d1(k, uv.X(), uv.Y(), p, du, dv);
-        n[k] = du.Crossed(dv);
         // At a pole one derivative is rounding noise: no normal to compare.
-        if (n[k].Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude() || du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12)
-          n[k] = gp_Vec(0, 0, 0);
+        n[k] = du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12 ? gp_Vec(0, 0, 0) : crossOrNone(du, dv);
       }
     };
     // The segment's chord in face k's UV: its ends, its direction scaled (dx, dy: the face's scaled
@@ -456,16 +460,13 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       return c;
     };
     // Face k's normal (not unit) at (u, v); none (zero) where the surface has no area there, as in
-    // normalsAt: a patch collapsed onto a segment has Su parallel to Sv, and the direction of their
-    // cross product is rounding noise (a fuzzed face's straight edge beside such a patch was halved
+    // normalsAt (a fuzzed face's straight edge beside a patch collapsed onto a segment was halved
     // down to a tenth of the tolerance for the noise: 3973 points on one edge, 4041 triangles of no
     // area).
     auto normalAt = [&](std::size_t k, double u, double v, gp_Pnt& p) {
       gp_Vec du, dv;
       d1(k, u, v, p, du, dv);
-      const gp_Vec n = du.Crossed(dv);
-      if (n.Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude()) return gp_Vec(0, 0, 0);
-      return n;
+      return crossOrNone(du, dv);
     };
     // A facet on the chord (pa, pb) with apex `apex` nearly edge-on to the surface (the face
     // mesher's fold rule), or flipped, against its corners' normals; not decided where one has none.

@@ -25,6 +25,8 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
   const bool closedForm = eval.closedFormDistance();
   for (std::size_t t = 0; t < triangles; ++t) {
     const std::uint32_t v[3] = {idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]};
+    const double cu[3] = {uv[2 * v[0]], uv[2 * v[1]], uv[2 * v[2]]};
+    const double cv[3] = {uv[2 * v[0] + 1], uv[2 * v[1] + 1], uv[2 * v[2] + 1]};
     if (exact) {  // planes, cylinders, spheres: the largest distance itself, not only at the samples
       auto corner = [&](int i) { return gp_Pnt(positions[3 * v[i]], positions[3 * v[i] + 1], positions[3 * v[i] + 2]); };
       int where = -1;
@@ -50,8 +52,7 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
       if (!eval.linear()) {
         // Spans with scales of their own (surface_eval.h): the triangle is straight in the scaled
         // plane, where its point's parameters are a much better start than the UV interpolation.
-        const double b3[3] = {b[0], b[1], b[2]}, cu[3] = {uv[2 * v[0]], uv[2 * v[1]], uv[2 * v[2]]};
-        const double cv[3] = {uv[2 * v[0] + 1], uv[2 * v[1] + 1], uv[2 * v[2] + 1]};
+        const double b3[3] = {b[0], b[1], b[2]};
         eval.blend(3, b3, cu, cv, u, w);
         d = std::min(d, eval.project(gp_Pnt(m), u, w, 8));
       }
@@ -66,8 +67,6 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
       // local minima of the distance (fuzzed patches' boundary chords, lying on the surface, read
       // 3.6x and 11x the deflection; from the grid's nearest point the foot is at 1e-4x).
       if (d > worst) {
-        const double cu[3] = {uv[2 * v[0]], uv[2 * v[1]], uv[2 * v[2]]};
-        const double cv[3] = {uv[2 * v[0] + 1], uv[2 * v[1] + 1], uv[2 * v[2] + 1]};
         double su = u, sw = w, nearest = 1e300;
         for (int i = 0; i <= kSeedSteps; ++i) {
           for (int j = 0; i + j <= kSeedSteps; ++j) {
@@ -92,8 +91,6 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
       // the knots (a fuzzed face 0.54 of v beyond them read 4.93x its tolerance, 134.5 where the
       // extrapolated surface is 5.5 away).
       if (d > worst) {
-        const double cu[3] = {uv[2 * v[0]], uv[2 * v[1]], uv[2 * v[2]]};
-        const double cv[3] = {uv[2 * v[0] + 1], uv[2 * v[1] + 1], uv[2 * v[2] + 1]};
         double box[4];
         eval.triangleBox(cu, cv, box);
         double bu = startU, bw = startW;
