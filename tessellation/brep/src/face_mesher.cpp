@@ -747,8 +747,31 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
       // Outward in the tangent plane: clear the bulge. Along the normal: far enough that the facet
       // on the chord tilts by less than ~40 degrees.
       c.clearance = -1.5 * w + 1.2 * h + 1e-3 * len;
-      // The zone the clearance guards, in scaled UV (scaled lengths approximate 3D ones; x2 margin).
-      const double reach = 2.0 * c.clearance;
+      // The zone the clearance guards, in scaled UV: twice the clearance (scaled lengths approximate
+      // 3D ones; x2 margin). Off a chord from a pole the surface moves far slower than the scaled
+      // plane, down to nothing at the pole: points well outside that zone lay beyond the chord in
+      // 3D, and every triangle they made on it was flipped (a fuzzed sheet fanning from a pole
+      // corner: 10206 triangles, 3995 flipped, where BRepMesh makes 1053). There the zone reaches
+      // as far out as a point twice the clearance off the chord in 3D (sampled at 1/8, 1/2 and 7/8
+      // of the chord), up to the chord's length; past the first zone it refuses only points beyond
+      // the chord (with the whole clearance there, points by an apex were refused all round it, and
+      // occt's bug33398, a SolidWorks part, kept 5 flipped triangles on a coarse level on its
+      // B-spline faces by an apex).
+      const double ex = c.pb.x - c.pa.x, ey = c.pb.y - c.pa.y, scaledLength = std::hypot(ex, ey);
+      double reach = 2.0 * c.clearance;
+      c.near = reach;
+      if ((singular_[a] || singular_[b]) && scaledLength > reach) {
+        const double px = -ey / scaledLength * reach, py = ex / scaledLength * reach;
+        double moved = reach;  // the least 3D distance a point `reach` off the chord moves
+        for (double f : {0.125, 0.5, 0.875}) {
+          const cet::Point2 q{c.pa.x + f * ex, c.pa.y + f * ey}, q1{q.x + px, q.y + py};
+          double u = 0, v = 0, u1 = 0, v1 = 0;
+          eval_.unscaled(q, u, v);
+          eval_.unscaled(q1, u1, v1);
+          moved = std::min(moved, eval_.point(u, v).Distance(eval_.point(u1, v1)));
+        }
+        reach = std::min(reach * reach / std::max(moved, 1e-300), scaledLength);
+      }
       c.x0 = std::min(c.pa.x, c.pb.x) - reach, c.x1 = std::max(c.pa.x, c.pb.x) + reach;
       c.y0 = std::min(c.pa.y, c.pb.y) - reach, c.y1 = std::max(c.pa.y, c.pb.y) + reach;
       x0 = std::min(x0, c.x0), y0 = std::min(y0, c.y0), x1 = std::max(x1, c.x1), y1 = std::max(y1, c.y1);
@@ -791,7 +814,10 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
     if (s < -0.1 || s > 1.1) continue;
     if (!evaluated) x = eval_.point(u, v), evaluated = true;
     const gp_Vec facet = c.ab.Crossed(gp_Vec(c.a, x));
-    if (facet.Dot(c.n) >= c.clearance * c.ab.Magnitude()) continue;
+    // Near the chord, the whole clearance; further out (a pole's chord), only its side.
+    const bool near = q.x >= std::min(c.pa.x, c.pb.x) - c.near && q.x <= std::max(c.pa.x, c.pb.x) + c.near &&
+                      q.y >= std::min(c.pa.y, c.pb.y) - c.near && q.y <= std::max(c.pa.y, c.pb.y) + c.near;
+    if (facet.Dot(c.n) >= (near ? c.clearance * c.ab.Magnitude() : 0.0)) continue;
     if (mayStand) {
       // Inside the clearance, a point that fixes the angle (or a flipped triangle, sliding along the
       // edge it is bisected on) may still stand on the chord if the facet it makes with it faces

@@ -175,6 +175,7 @@ class FaceMesher {
     cet::Point2 pa, pb;  // scaled UV
     double clearance = 0;
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // guarded zone in scaled UV
+    double near = 0;  // within this of the chord's ends' box the whole clearance is kept; beyond, its side
   };
   std::vector<Chord> chords_;
   std::vector<std::vector<std::uint32_t>> chordGrid_;  // chords by cell of a uniform scaled-UV grid
