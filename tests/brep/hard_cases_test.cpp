@@ -190,6 +190,27 @@ TEST(HardCases, UnevenKnotSpans) {
   checkSheet(face, "uneven_knots");
 }
 
+// uneven_edge_span.brep (tests/brep/data, as face_fuzz wrote it) is a bicubic B-spline whose last v
+// span is 2.6e-6 of its range of 1.64 and carries thousands of units of its side u = 0: the edge's
+// segments were checked at fractions of their parameter range only, none of which fell in that
+// span, and level 1 kept a chord 1.08x the level's tolerance from the surface (4338 triangles,
+// 3264 flipped on the last level). Segments are also checked at the knots inside them and the
+// middles of their spans. (Levels 0 and 1 only: the last one takes seconds.)
+TEST(HardCases, AnEdgeSpanFarShorterThanItsSegmentIsSampled) {
+  auto model = test::loadTestData("uneven_edge_span.brep");
+  ASSERT_TRUE(model);
+  auto created = Tessellator::create(*model, test::relative(0.00015201004304370571, 57.905241474021516));
+  ASSERT_TRUE(created.tessellator) << created.error;
+  Tessellator& t = *created.tessellator;
+  ASSERT_GE(t.lastLevel(), 1);
+  ASSERT_TRUE(t.run(1, {}, nullptr, 1));
+  for (int k = 0; k <= 1; ++k) {
+    const FaceQuality q = measureFaces(t, k).at(0);
+    EXPECT_LE(q.maxDeviation, t.schedule()[std::size_t(k)].chordal) << "level " << k << ": 1.08x on level 1 before";
+    EXPECT_LE(q.triangles, 2000u) << "level " << k << ": 4338 on level 1 with the chord across the short span";
+  }
+}
+
 TEST(HardCases, PlateWithHundredHoles) {
   // A 200 x 200 plate, 20 thick, with a 10 x 10 grid of holes: a closed solid.
   BRepBuilderAPI_MakeFace maker(BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(200, 0, 0), gp_Pnt(200, 200, 0),

@@ -691,6 +691,31 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       }
       return false;
     };
+    // The interior knots of a B-spline 3D curve: each span is one polynomial piece, and a segment's
+    // samples (fractions of its parameter range) miss a span much shorter than the segment (a
+    // fuzzed edge's last span, 2.6e-6 of its range of 1.64, carried thousands of units of its
+    // length: its chord ran 1.08x the tolerance from the face on level 1).
+    std::vector<double> knots;
+    if (curve.GetType() == GeomAbs_BSplineCurve) {
+      const Handle(Geom_BSplineCurve) bspline = curve.BSpline();
+      for (int i = 1; i <= bspline->NbKnots(); ++i)
+        if (bspline->Knot(i) > info.first && bspline->Knot(i) < info.last) knots.push_back(bspline->Knot(i));
+    }
+    // Whether the curve leaves the chord (pa, pb) by more than `chordal` at a knot inside (ta, tb) or
+    // in the middle of a span there (the first and last cut by the segment's ends too).
+    auto offChordAtKnots = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, double chordal) {
+      auto k = std::upper_bound(knots.begin(), knots.end(), ta);
+      if (k == knots.end() || *k >= tb) return false;
+      double previous = ta;
+      for (int checked = 0; checked < 256 && previous < tb; ++checked) {
+        const double next = k != knots.end() && *k < tb ? *k : tb;
+        if (distanceToSegment(curve.Value(0.5 * (previous + next)), pa, pb) > chordal) return true;
+        if (next < tb && distanceToSegment(curve.Value(next), pa, pb) > chordal) return true;
+        previous = next;
+        if (k != knots.end()) ++k;
+      }
+      return false;
+    };
     struct Item {
       double ta, tb;
       gp_Pnt pa, pb;
@@ -706,6 +731,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       if (!info.straight) {
         for (double f : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875})
           if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > crit.chordal) return true;
+        if (offChordAtKnots(s.ta, s.tb, s.pa, s.pb, crit.chordal)) return true;
         if (chord > minSize) {
           const gp_Vec chordDir(s.pa, s.pb);
           if (angleBetween(s.da, s.db) > crit.angleRad || angleBetween(s.da, chordDir) > crit.angleRad ||
