@@ -211,6 +211,23 @@ TEST(HardCases, AnEdgeSpanFarShorterThanItsSegmentIsSampled) {
   }
 }
 
+// polyline_vertex_by_its_end.brep (as face_fuzz wrote it): the side v = vmax of a ruled B-spline is a
+// degree-1 curve 2.77 long with a vertex 2e-6 from its end, in the sheet's last u spans, 2e-6 wide.
+// Halving a segment stops 2^24 times below its seed (1.6e-7 here), and the chord kept skipping the
+// vertex, 0.52 from it: the face read 1.02x its deflection, at its only level (0.1%, final level
+// alone, as face_fuzz ran it). Past that depth a knot inside a segment still halves it.
+TEST(HardCases, AKnotFarBelowTheSubdivisionDepthIsReached) {
+  auto model = test::loadTestData("polyline_vertex_by_its_end.brep");
+  ASSERT_TRUE(model);
+  MeshParams params = test::relative(0.001, 15.592126344701304);
+  params.progressive = false;
+  auto t = test::tessellate(*model, params);
+  ASSERT_TRUE(t);
+  const FaceQuality q = measureFaces(*t, t->lastLevel()).at(0);
+  EXPECT_LE(q.maxDeviation, t->schedule().back().chordal) << "1.02x with the chord skipping the vertex";
+  EXPECT_EQ(q.degenerate, 0u);
+}
+
 TEST(HardCases, PlateWithHundredHoles) {
   // A 200 x 200 plate, 20 thick, with a 10 x 10 grid of holes: a closed solid.
   BRepBuilderAPI_MakeFace maker(BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(200, 0, 0), gp_Pnt(200, 200, 0),

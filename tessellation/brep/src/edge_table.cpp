@@ -725,7 +725,11 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     };
     // Whether segment s misses the criteria of tolerance `crit` and must be halved.
     auto misses = [&](const Item& s, const Level& crit) {
-      if (s.depth >= kMaxDepth || !(s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb)))) return false;
+      if (!(s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb)))) return false;
+      // Past kMaxDepth only a knot inside a segment still halves it: a span can be far shorter than
+      // 2^-24 of its edge (a fuzzed polyline's vertex 2e-6 from its end on an edge 2.77 long kept a
+      // chord skipping it, 1.85x the deflection from it).
+      if (s.depth >= kMaxDepth) return !info.straight && offChordAtKnots(s.ta, s.tb, s.pa, s.pb, crit.chordal);
       const double minSize = 0.1 * crit.chordal;  // below it the angle criteria are not applied (as BRepMesh's MinSize)
       const double chord = s.pa.Distance(s.pb);
       if (!info.straight) {
