@@ -1,6 +1,8 @@
 // Surfaces without area over part or all of a face, as face_fuzz wrote them (tests/brep/data).
 #include <gtest/gtest.h>
 
+#include <ostream>
+
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Geom_Plane.hxx>
 #include <TopoDS_Face.hxx>
@@ -77,45 +79,47 @@ TEST(CollapsedSurface, AFanOntoAStraightSideIsNotSplitOnAndOnAlongIt) {
   }
 }
 
-// sheet_from_pole_corner.brep is a flat B-spline sheet 0.03 long whose first row of poles is one
-// point: its side v = vmax runs from that pole as a curve, one chord 0.024 long on the first
-// levels. Near the pole the surface moves an eighth as fast off that chord as the scaled plane
-// does, and the zone where a chord's clearance is checked (twice the clearance in scaled UV) let
-// points through that lay beyond the chord in 3D: every triangle on or beside it flipped, and the
-// splits of flipped triangles crowded against the side. At 0.037% 10206 triangles, 3995 flipped
-// (BRepMesh: 1053). The zone widens where the surface moves slower than the scaled plane: 112
-// triangles, none flipped on the last level. One stays flipped on level 1, where a split of a
-// triangle collapsed onto the pole (such splits skip the clearance: its other points flipped
-// triangles by the pole instead) lands beyond the chord; level 2 halves the chord.
-TEST(CollapsedSurface, ASheetFromAPoleCornerKeepsItsPointsClearOfTheCurvedSide) {
+// Sheets fanning from a pole corner: B-splines whose first row of poles is one point. Off a
+// boundary chord from the pole the surface moves far slower than the scaled UV plane, and the zone
+// where a chord's clearance was checked (twice the clearance in scaled UV) let points through that
+// lay beyond the chord in 3D: every triangle on or beside it flipped, and the splits of flipped
+// triangles crowded against the side. The zone of a chord from a pole now reaches as far out as the
+// surface's speed needs, refusing there only points beyond the chord.
+// - sheet_from_pole_corner.brep is flat, 0.03 long, its side v = vmax a curve from the pole (one
+//   chord 0.024 long on the first levels): at 0.037% 10206 triangles, 3995 flipped (BRepMesh 1053);
+//   now 112. One stays flipped on level 1, where a split of a triangle collapsed onto the pole
+//   (such splits skip the clearance: its other points flipped triangles by the pole instead) lands
+//   beyond the chord; level 2 halves the chord.
+// - bent_sheet_from_pole_corner.brep is bent along its length, 82 long: at 0.042% 12993 triangles,
+//   4211 flipped (BRepMesh 1503); now 999. Where the widened zone kept the whole clearance rather
+//   than only the chord's side, one stayed flipped on each of its last three levels (as 5 did on a
+//   coarse level of a SolidWorks part's B-spline faces by an apex).
+struct PoleCornerSheet {
+  const char* file;
+  double deflection, angleDeg;
+  std::size_t mostTriangles;  // a tenth of what the last level took with points beyond the chords
+};
+void PrintTo(const PoleCornerSheet& sheet, std::ostream* os) { *os << sheet.file; }
+
+class FanFromAPoleCorner : public testing::TestWithParam<PoleCornerSheet> {};
+
+TEST_P(FanFromAPoleCorner, KeepsItsPointsOnTheInsideOfItsChords) {
+  const PoleCornerSheet& sheet = GetParam();
   const std::vector<FaceQuality> levels =
-      test::testDataEveryLevel("sheet_from_pole_corner.brep", test::relative(0.00037327612484975826, 49.29289692530709));
+      test::testDataEveryLevel(sheet.file, test::relative(sheet.deflection, sheet.angleDeg));
   ASSERT_FALSE(levels.empty());
   for (const FaceQuality& q : levels) {
-    EXPECT_LE(q.triangles, 1000u) << "10206 on the last level with points beyond the side's chord";
-    EXPECT_LE(q.flipped, 1u) << "3995 on the last level with points beyond the side's chord";
+    EXPECT_LE(q.triangles, sheet.mostTriangles) << "10 times as many with points beyond the chords";
+    EXPECT_LE(q.flipped, 1u) << "thousands on the last level with points beyond the chords";
     EXPECT_EQ(q.degenerate, 0u);
   }
   EXPECT_EQ(levels.back().flipped, 0u);
 }
 
-// bent_sheet_from_pole_corner.brep is a B-spline sheet bent along its length, 82 long, whose first
-// row of poles is one point: the same fan from a pole corner, with the surface moving slowly off
-// the chords from the pole far out along them. Points beyond those chords flipped the triangles on
-// them: at 0.042% 12993 triangles, 4211 flipped (BRepMesh: 1503). Where the widened zone kept the
-// whole clearance rather than only the chord's side, one stayed flipped on each of the last
-// three levels (as 5 did on a coarse level of a SolidWorks part's B-spline faces by an apex).
-TEST(CollapsedSurface, ABentSheetFromAPoleCornerKeepsItsPointsOnTheInsideOfItsChords) {
-  const std::vector<FaceQuality> levels =
-      test::testDataEveryLevel("bent_sheet_from_pole_corner.brep", test::relative(0.00042445578391277453, 16.234149691004806));
-  ASSERT_FALSE(levels.empty());
-  for (const FaceQuality& q : levels) {
-    EXPECT_LE(q.triangles, 2000u) << "12993 on the last level with points beyond the chords";
-    EXPECT_LE(q.flipped, 1u);
-    EXPECT_EQ(q.degenerate, 0u);
-  }
-  EXPECT_EQ(levels.back().flipped, 0u) << "4211 with points beyond the chords, 1 with the whole clearance far out";
-}
+INSTANTIATE_TEST_SUITE_P(
+    FuzzedFaces, FanFromAPoleCorner,
+    testing::Values(PoleCornerSheet{"sheet_from_pole_corner.brep", 0.00037327612484975826, 49.29289692530709, 1000},
+                    PoleCornerSheet{"bent_sheet_from_pole_corner.brep", 0.00042445578391277453, 16.234149691004806, 1300}));
 
 // Faces whose surface has no area anywhere: reported empty, with the reason, on every level.
 // - collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on
