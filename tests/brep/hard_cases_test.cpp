@@ -1,6 +1,8 @@
 // Hard cases built with OpenCASCADE's modelling API: poles, apexes, seams, periodic B-splines, many
 // holes, thin faces, tiny edges, a surface of revolution touching its axis, a pinched B-spline row,
-// circles of planes, cylinders and cones, a slight arc, a narrow cone under coarse chords.
+// circles of planes, cylinders and cones, a slight arc, a narrow cone under coarse chords; and two
+// edges face_fuzz wrote (tests/brep/data) whose curves bend within a span far shorter than their
+// segments.
 #include <gtest/gtest.h>
 
 #include <algorithm>
