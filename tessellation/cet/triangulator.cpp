@@ -257,6 +257,18 @@ void Triangulator::legalizeEdges(std::vector<std::pair<VertexId, VertexId>>& sta
   }
 }
 
+bool Triangulator::flipEdge(TriangleId t, int i) {
+  if (t >= mesh_.triangleCount() || mesh_.isGhost(t) || mesh_.isConstrained(t, i)) return false;
+  const EdgeRef across = mesh_.twin(EdgeRef{t, i});
+  if (across.t == kNoTriangle || mesh_.isGhost(across.t)) return false;
+  const Point2 pa = mesh_.point(mesh_.vertex(t, i)), pd = mesh_.point(mesh_.vertex(across.t, across.i));
+  const double ox = orient2d(pa, pd, mesh_.point(mesh_.edgeOrigin(EdgeRef{t, i})));
+  const double oy = orient2d(pa, pd, mesh_.point(mesh_.edgeDestination(EdgeRef{t, i})));
+  if (!((ox > 0.0 && oy < 0.0) || (ox < 0.0 && oy > 0.0))) return false;
+  mesh_.flip(t, i, across.i);
+  return true;
+}
+
 Status Triangulator::insertSegment(VertexId a, VertexId b) {
   const auto n = static_cast<VertexId>(mesh_.vertexCount());
   if (a >= n || b >= n) {

@@ -97,6 +97,14 @@ class Triangulator {
   // One point, walking from `hint` (any triangle, or kNoTriangle for the last one touched).
   InsertOutcome insertPoint(Point2 p, VertexId* id, TriangleId hint = kNoTriangle);
 
+  // Replaces the diagonal of the quadrilateral that t and its neighbour across edge i form, where
+  // that edge is unconstrained, neither triangle is a ghost and the quadrilateral is strictly
+  // convex; returns whether it did. Unlike Lawson's flips it asks no in-circle test: the
+  // triangulation may stop being Delaunay there, for a refiner that trades that for what the plane
+  // does not see (the orientation of the triangles on a surface). Later insertions keep it a valid
+  // constrained triangulation. Afterwards t = (a, b, d) and the neighbour = (a, d, c) (CetMesh::flip).
+  bool flipEdge(TriangleId t, int i);
+
   // --- results ---
   bool hasTriangles() const { return !mesh_.empty(); }
   // Vertex ids, three per inside triangle, counter-clockwise, in triangle-array order.

@@ -121,6 +121,24 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(PoleCornerSheet{"sheet_from_pole_corner.brep", 0.00037327612484975826, 49.29289692530709, 1000},
                     PoleCornerSheet{"bent_sheet_from_pole_corner.brep", 0.00042445578391277453, 16.234149691004806, 1300}));
 
+// plane_fanning_from_a_pole_corner.brep is a flat quadratic B-spline 139 x 9.5 whose last row of
+// poles is one corner point, and whose last four u spans, a millionth of the first's width, carry
+// two thirds of its length (in the second the speed ramps up 3e5x). By the pole its triangles are
+// long slivers fanning from the corner, over which the surface's map from the scaled plane is far
+// from linear: a Delaunay quadrilateral there can face away on the surface while its other
+// diagonal faces right, and splitting the flipped triangle made more such quadrilaterals beside it:
+// at 0.1% and 21 degrees (the final level alone) 57893 triangles, 12334 flipped, the whole face
+// within 5e-5 of the tolerance (BRepMesh: 431). Flipping the diagonal instead: 83, none flipped.
+TEST(CollapsedSurface, AFlippedTriangleIsPutRightByFlippingAnEdgeRatherThanBySplits) {
+  MeshParams params = test::relative(0.001, 21.082475013351644);
+  params.progressive = false;
+  const std::vector<FaceQuality> levels = test::testDataEveryLevel("plane_fanning_from_a_pole_corner.brep", params);
+  ASSERT_EQ(levels.size(), 1u);
+  EXPECT_LE(levels[0].triangles, 1000u) << "57893 splitting flipped triangles";
+  EXPECT_EQ(levels[0].flipped, 0u) << "12334 splitting flipped triangles";
+  EXPECT_EQ(levels[0].degenerate, 0u);
+}
+
 // Faces whose surface has no area anywhere: reported empty, with the reason, on every level.
 // - collapsed_segment.brep is a biquadratic B-spline whose three rows of poles are three points on
 //   one segment, bounded by two degenerate edges and the segment twice. Its vertices' normals were

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "cet/poly_triangulation.h"
+#include "cet/predicates.h"
 #include "triangulation_checks.h"
 
 namespace cet {
@@ -324,6 +325,51 @@ TEST(Triangulator, RandomSegmentsNeverCorruptTheMesh) {
     expectValidCdt(tri);
     expectSegmentsPresent(tri, accepted);
   }
+}
+
+TEST(Triangulator, FlipEdgeTakesTheOtherDiagonalWhereTheQuadIsConvexAndInsertionGoesOn) {
+  // A refiner may flip an edge against the in-circle test (for the triangles' facing on a surface):
+  // only unconstrained edges between finite triangles whose quadrilateral is strictly convex, and
+  // later insertions still make a valid constrained triangulation of the same domain.
+  Triangulator tri;
+  ASSERT_NO_FATAL_FAILURE(constrainedUnitSquare(tri));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.999, 0.999);
+  std::vector<Point2> batch(300);
+  for (auto& q : batch) q = {u(rng), u(rng)};
+  std::vector<VertexId> ids(batch.size());
+  tri.insertPoints(batch.data(), batch.size(), ids.data());
+  const CetMesh& m = tri.mesh();
+  int flipped = 0, refusedConstrained = 0, refusedConcave = 0;
+  for (TriangleId t = 0; t < m.triangleCount(); ++t) {
+    if (m.isGhost(t) || m.isOutside(t)) continue;
+    const int i = static_cast<int>(t % 3);
+    const EdgeRef across = m.twin(EdgeRef{t, i});
+    const bool constrained = m.isConstrained(t, i);
+    const Point2 pa = m.point(m.vertex(t, i)), pb = m.point(m.vertex(t, next3(i))), pc = m.point(m.vertex(t, prev3(i)));
+    const bool convex = !constrained && !m.isGhost(across.t) &&
+                        orient2d(pa, pb, m.point(m.vertex(across.t, across.i))) > 0 &&
+                        orient2d(pa, m.point(m.vertex(across.t, across.i)), pc) > 0;
+    const VertexId a = m.vertex(t, i), d = constrained ? kNoVertex : m.vertex(across.t, across.i);
+    const bool done = tri.flipEdge(t, i);
+    EXPECT_EQ(done, convex) << "triangle " << t << " edge " << i;
+    refusedConstrained += constrained;
+    refusedConcave += !constrained && !convex;
+    if (!done) continue;
+    ++flipped;
+    EXPECT_NE(m.findEdge(a, d).t, kNoTriangle) << "the new diagonal joins the two opposite corners";
+    ASSERT_EQ(checkTopology(m), "") << "after flipping triangle " << t << " edge " << i;
+  }
+  EXPECT_GT(flipped, 100);
+  EXPECT_GT(refusedConstrained, 0);
+  EXPECT_GT(refusedConcave, 0);
+  EXPECT_NE(checkDelaunay(m), "") << "the flips break the in-circle test somewhere";
+  EXPECT_NEAR(coveredArea(tri), 4.0, 1e-12);
+  for (auto& q : batch) q = {u(rng), u(rng)};
+  tri.insertPoints(batch.data(), batch.size(), ids.data());
+  EXPECT_EQ(checkTopology(m), "");
+  EXPECT_NEAR(coveredArea(tri), 4.0, 1e-12);
+  expectSegmentsPresent(tri, {{0, 1}, {1, 2}, {2, 3}, {3, 0}});
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include <Standard_Failure.hxx>
 
 #include "brepmesh_fallback.h"
+#include "cet/predicates.h"
 #include "edge_table.h"
 #include "facet_rules.h"
 #include "measure_impl.h"
@@ -928,6 +929,63 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
   return m.isConstrained(t, 0) || m.isConstrained(t, 1) || m.isConstrained(t, 2);
 }
 
+double FaceMesher::facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, const FaceMesh& mesh) const {
+  const cet::VertexId v[3] = {a, b, c};
+  gp_Pnt P[3];
+  double u[3], w[3];
+  gp_Vec ref(0, 0, 0);
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t o = base_ + v[i];
+    P[i] = gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+    u[i] = mesh.uv[2 * o], w[i] = mesh.uv[2 * o + 1];
+    if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
+  }
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (eval_.crossesCrease(u[i], w[i], u[j], w[j])) return -2;
+    if (!singular_[v[i]] && !singular_[v[j]] && normal_[v[i]].Dot(normal_[v[j]]) < 0 &&
+        eval_.normalJumps(u[i], w[i], u[j], w[j], normal_[v[i]], normal_[v[j]]))
+      return -2;
+  }
+  const gp_Vec n = gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
+  const double longest = std::max({P[0].Distance(P[1]), P[1].Distance(P[2]), P[2].Distance(P[0])});
+  if (!(n.Magnitude() > 1e-12 * longest * longest) || !(ref.Magnitude() > 0)) return -2;
+  // The output's normals as well, poles included (those the measure judges facing by), back on
+  // the surface's natural side.
+  gp_Vec shown(0, 0, 0);
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t o = base_ + v[i];
+    shown += gp_Vec(mesh.normals[3 * o], mesh.normals[3 * o + 1], mesh.normals[3 * o + 2]);
+  }
+  if (settings_.reversed) shown.Reverse();
+  if (!(shown.Magnitude() > 0)) return -2;
+  return std::min(n.Dot(ref) / (n.Magnitude() * ref.Magnitude()), n.Dot(shown) / (n.Magnitude() * shown.Magnitude()));
+}
+
+int FaceMesher::repairingFlip(cet::TriangleId t, const FaceMesh& mesh) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  for (int i = 0; i < 3; ++i) {
+    if (m.isConstrained(t, i)) continue;
+    const cet::EdgeRef across = m.twin(cet::EdgeRef{t, i});
+    if (across.t == cet::kNoTriangle || m.isGhost(across.t) || m.isOutside(across.t)) continue;
+    // t = (a, b, c) with a = corner i, d opposite in the neighbour: the flip makes (a, b, d) and (a, d, c).
+    const cet::VertexId a = m.vertex(t, i), b = m.vertex(t, (i + 1) % 3), c = m.vertex(t, (i + 2) % 3);
+    const cet::VertexId d = m.vertex(across.t, across.i);
+    const cet::Point2 pa = cdt_->point(a), pb = cdt_->point(b), pc = cdt_->point(c), pd = cdt_->point(d);
+    if (!(cet::orient2d(pa, pb, pd) > 0 && cet::orient2d(pa, pd, pc) > 0)) continue;  // not strictly convex
+    // Not across a fold of the parametrisation (corners' normals opposed), where no flat triangle
+    // faces both ways and a flip only moves the flipped one elsewhere.
+    const cet::VertexId q[4] = {a, b, c, d};
+    bool fold = false;
+    for (int j = 0; j < 4 && !fold; ++j)
+      for (int k = j + 1; k < 4 && !fold; ++k)
+        fold = !singular_[q[j]] && !singular_[q[k]] && normal_[q[j]].Dot(normal_[q[k]]) < 0;
+    if (fold) continue;
+    if (facing(a, b, d, mesh) >= kFoldCos && facing(a, d, c, mesh) >= kFoldCos) return i;
+  }
+  return -1;
+}
+
 bool FaceMesher::inLineOnChordIntoPole(cet::TriangleId t, const TriangleRecord& r) const {
   if (!(r.flags & TriangleRecord::kInLine)) return false;
   const cet::CetMesh& m = cdt_->mesh();
@@ -1028,6 +1086,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
     points_.clear();
     uvs.clear();
     splitTriangles_.clear();
+    flips_.clear();
     const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
     nextWork_.clear();
     // The first pass looks at every triangle (the tolerances are new); later ones only at the
@@ -1075,7 +1134,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
     for (const cet::TriangleId t : visit_) {
       const TriangleRecord* r = &records_.at(t);
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
-      int at = -1;
+      int at = -1, flipEdge = -1;
       bool forAngle = false, forDeviation = false;
       // Corners off the surface (edge points of an edge that strays from it within its tolerance)
       // hold the triangle that far from it whatever its size: the deviation it can reach.
@@ -1095,9 +1154,10 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
                                            belowMinSize < kMaxSplitsBelowMinSize))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
-        // thinner ones).
+        // thinner ones), unless flipping an edge puts them right (repairingFlip).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
-        belowMinSize += r->longest <= minSize;
+        if (r->longest > level.chordal) flipEdge = repairingFlip(t, mesh);
+        if (flipEdge < 0) belowMinSize += r->longest <= minSize;
       }
       if (at < 0) continue;
       // One split per neighbourhood and pass: points requested by adjacent triangles in the same
@@ -1105,6 +1165,22 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       if (touched_.size() < m.vertexCount()) touched_.resize(m.vertexCount(), -1);
       if (touched_[m.vertex(t, 0)] == stamp || touched_[m.vertex(t, 1)] == stamp || touched_[m.vertex(t, 2)] == stamp) {
         nextWork_.push_back(t);  // again next pass
+        continue;
+      }
+      if (flipEdge >= 0) {
+        const cet::EdgeRef across = m.twin(cet::EdgeRef{t, flipEdge});
+        const cet::VertexId d = m.vertex(across.t, across.i);
+        if (touched_[d] == stamp) {
+          nextWork_.push_back(t);
+          continue;
+        }
+        if (settings_.trace) {
+          std::fprintf(stderr, "pass %d: triangle %u (%u %u %u; facet %g) flipped on edge %d to %u\n", pass, t, m.vertex(t, 0),
+                       m.vertex(t, 1), m.vertex(t, 2), r->facetCos, flipEdge, d);
+        }
+        for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
+        touched_[d] = stamp;
+        flips_.emplace_back(t, flipEdge);
         continue;
       }
       double b[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
@@ -1153,13 +1229,21 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       points_.push_back(q);
       splitTriangles_.push_back(t);
     }
-    if (points_.empty()) return true;
+    // The flips first: their quadrilaterals share no vertex with each other or with a split
+    // triangle (touched_), so none of them has changed since it was chosen.
+    for (const auto& [t, i] : flips_) {
+      if (!cdt_->flipEdge(t, i)) continue;
+      nextWork_.push_back(t);
+      nextWork_.push_back(m.neighbor(t, 1));  // t = (a, b, d), its neighbour (a, d, c) across edge 1
+    }
+    if (points_.empty() && flips_.empty()) return true;
     const auto countBefore = static_cast<cet::VertexId>(cdt_->vertexCount());
     ids_.assign(points_.size(), cet::kNoVertex);
     outcomes_.assign(points_.size(), cet::InsertOutcome::kOutside);
-    cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data(), splitTriangles_.data());
+    if (!points_.empty()) cdt_->insertPoints(points_.data(), points_.size(), ids_.data(), outcomes_.data(), splitTriangles_.data());
     const auto countAfter = static_cast<cet::VertexId>(cdt_->vertexCount());
-    if (countAfter == countBefore) return true;  // every request merged or rejected: nothing left to gain
+    // Every request merged or rejected: nothing left to gain.
+    if (countAfter == countBefore && flips_.empty()) return true;
     std::vector<std::uint32_t> inputOf(countAfter - countBefore, UINT32_MAX);
     for (std::size_t i = 0; i < ids_.size(); ++i)
       if (outcomes_[i] == cet::InsertOutcome::kInserted && ids_[i] >= countBefore) inputOf[ids_[i] - countBefore] = static_cast<std::uint32_t>(i);

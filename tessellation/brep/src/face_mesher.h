@@ -139,6 +139,23 @@ class FaceMesher {
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
   bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
+  // How the flat triangle (a, b, c) faces against its corners' surface normals: the cosine of its
+  // normal with their sum (the smaller of those with the first-derivative normals and with the
+  // output's normals, which poles have too); -2 where it has no area, no corner with a normal, or
+  // an edge across a crease or fold of the surface (no one side to face).
+  double facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, const FaceMesh& mesh) const;
+  // An edge of flipped triangle t whose flip (Triangulator::flipEdge) leaves both triangles of the
+  // quadrilateral facing the surface's way (facing() at least kFoldCos), with no two of its corners'
+  // normals opposed (a fold, where no flat triangle faces both ways), or -1. Such a flip puts the
+  // orientation right without a point: where the surface's map from the scaled plane is far from
+  // linear over the triangles (a sheet fanning from a pole corner), the Delaunay diagonal of a
+  // quadrilateral may face away on the surface while the other diagonal faces right, and splits of
+  // the flipped triangle made more such quadrilaterals beside it (a fuzzed plane's fan: 57893
+  // triangles, 12334 flipped, within 5e-5 of the tolerance; now 83, none flipped). refine() asks
+  // it for flipped triangles longer than the level's tolerance only, those split whatever the
+  // chords' clearance: for smaller ones the changed meshes left more triangles flipped across folds
+  // on A319's wing tips (14 on the final level instead of 10) and one on trj4.
+  int repairingFlip(cet::TriangleId t, const FaceMesh& mesh) const;
   // Whether t, its corners in line through a pole (TriangleRecord::kInLine), stands on a boundary
   // chord with an end at a pole or apex. Bisecting such a triangle only makes another on the same
   // chord with its apex nearer to it, in line again: no split puts it right (a fuzzed fan onto a
@@ -207,6 +224,7 @@ class FaceMesher {
   std::vector<cet::VertexId> ids_;
   std::vector<cet::Point2> segmentPoints_;  // a boundary segment's new points (splitSegment)
   std::vector<cet::TriangleId> splitTriangles_;  // the triangle each point of points_ splits
+  std::vector<std::pair<cet::TriangleId, int>> flips_;  // a pass's repairing flips (repairingFlip)
   std::vector<cet::TriangleId> work_, nextWork_;   // triangles a refinement pass looks at (after the first)
   std::vector<cet::InsertOutcome> outcomes_;
   std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
