@@ -94,6 +94,14 @@ TEST(CollapsedSurface, AFanOntoAStraightSideIsNotSplitOnAndOnAlongIt) {
 //   4211 flipped (BRepMesh 1503); now 999. Where the widened zone kept the whole clearance rather
 //   than only the chord's side, one stayed flipped on each of its last three levels (as 5 did on a
 //   coarse level of a SolidWorks part's B-spline faces by an apex).
+// - sheet_bulging_from_a_pole_corner.brep is flat, 0.025 long, its side from the pole bulging out
+//   beyond its chord (by 2e-5 on a chord 0.014 long). Once a point stood in that bulge, the
+//   triangle on the chord from it and the pole was flipped, and each split of it (sliding along
+//   the edge it bisects, standing on the chord as a facet facing the surface's way) put another
+//   point in the bulge, nearer the side: at 0.041% 13022 triangles, 4526 flipped, from level 2 on
+//   (BRepMesh 394). A flipped triangle from the pole whose other corners stand within the bulge
+//   of a chord from it (FaceMesher::huggingPoleChord) is no longer split: 82, none flipped on the
+//   last level.
 struct PoleCornerSheet {
   const char* file;
   double deflection, angleDeg;
@@ -119,7 +127,8 @@ TEST_P(FanFromAPoleCorner, KeepsItsPointsOnTheInsideOfItsChords) {
 INSTANTIATE_TEST_SUITE_P(
     FuzzedFaces, FanFromAPoleCorner,
     testing::Values(PoleCornerSheet{"sheet_from_pole_corner.brep", 0.00037327612484975826, 49.29289692530709, 1000},
-                    PoleCornerSheet{"bent_sheet_from_pole_corner.brep", 0.00042445578391277453, 16.234149691004806, 1300}));
+                    PoleCornerSheet{"bent_sheet_from_pole_corner.brep", 0.00042445578391277453, 16.234149691004806, 1300},
+                    PoleCornerSheet{"sheet_bulging_from_a_pole_corner.brep", 0.00040839277467001951, 18.001602197299153, 1300}));
 
 // plane_fanning_from_a_pole_corner.brep is a flat quadratic B-spline 139 x 9.5 whose last row of
 // poles is one corner point, and whose last four u spans, a millionth of the first's width, carry

@@ -929,6 +929,56 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
   return m.isConstrained(t, 0) || m.isConstrained(t, 1) || m.isConstrained(t, 2);
 }
 
+bool FaceMesher::huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, const FaceMesh& mesh) const {
+  if (!(r.flags & TriangleRecord::kPoleCorner)) return false;
+  const cet::CetMesh& m = cdt_->mesh();
+  auto pos = [&](cet::VertexId id) {
+    const std::size_t o = base_ + id;
+    return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+  };
+  int pole = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (!singular_[m.vertex(t, i)]) continue;
+    if (pole >= 0) return false;
+    pole = i;
+  }
+  if (pole < 0) return false;
+  const gp_Pnt P = pos(m.vertex(t, pole));
+  const gp_Pnt X[2] = {pos(m.vertex(t, (pole + 1) % 3)), pos(m.vertex(t, (pole + 2) % 3))};
+  for (const Chord& c : chords_) {
+    const double len2 = c.ab.SquareMagnitude();
+    if (!(len2 > 0)) continue;
+    const double len = std::sqrt(len2);
+    const gp_Pnt b = c.a.Translated(c.ab);
+    const bool fromA = c.a.Distance(P) <= 1e-9 * len;
+    if (!fromA && !(b.Distance(P) <= 1e-9 * len)) continue;
+    const gp_Pnt& far = fromA ? b : c.a;
+    bool both = true;
+    for (int k = 0; k < 2 && both; ++k) {
+      if (X[k].Distance(far) <= 1e-9 * len) continue;  // the chord's other end
+      const gp_Vec ax(c.a, X[k]);
+      const double s = ax.Dot(c.ab) / len2;
+      if (!(s > 0 && s < 1)) {
+        both = false;
+        break;
+      }
+      // The side at the same fraction of the chord: how far it bulges out beyond the chord, against
+      // how far in the corner stands (negative: beyond the chord too).
+      const cet::Point2 q{c.pa.x + s * (c.pb.x - c.pa.x), c.pa.y + s * (c.pb.y - c.pa.y)};
+      double u = 0, v = 0;
+      eval_.unscaled(q, u, v);
+      const double bulge = -c.ab.Crossed(gp_Vec(c.a, eval_.point(u, v))).Dot(c.n) / len;
+      const double in = c.ab.Crossed(ax).Dot(c.n) / len;
+      both = bulge > 0 && in < bulge;
+    }
+    if (both) {
+      if (settings_.trace) std::fprintf(stderr, "  triangle %u hugs a chord from a pole (length %g): not split\n", t, len);
+      return true;
+    }
+  }
+  return false;
+}
+
 double FaceMesher::facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, const FaceMesh& mesh) const {
   const cet::VertexId v[3] = {a, b, c};
   gp_Pnt P[3];
@@ -1157,6 +1207,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         // thinner ones), unless flipping an edge puts them right (repairingFlip).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
         if (r->longest > level.chordal) flipEdge = repairingFlip(t, mesh);
+        if (flipEdge < 0 && huggingPoleChord(t, *r, mesh)) continue;
         if (flipEdge < 0) belowMinSize += r->longest <= minSize;
       }
       if (at < 0) continue;

@@ -156,6 +156,15 @@ class FaceMesher {
   // chords' clearance: for smaller ones the changed meshes left more triangles flipped across folds
   // on A319's wing tips (14 on the final level instead of 10) and one on trj4.
   int repairingFlip(cet::TriangleId t, const FaceMesh& mesh) const;
+  // Whether t, with one corner at a pole, has each other corner at the far end of a boundary chord
+  // from that pole or beside it where the side bulges out beyond the chord, no further in from the
+  // chord than the side is out at the same fraction of it (or itself beyond). A triangle on the
+  // chord from a point in the bulge is flipped, and a split of it (sliding along the edge it
+  // bisects, standing on the chord as a facet that faces the surface's way) only put another point
+  // in the bulge, nearer the side: a cascade along it (a fuzzed sheet: 13022 triangles, 4526
+  // flipped). refine() does not split such a triangle as flipped, unless an edge flip puts it
+  // right (repairingFlip).
+  bool huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, const FaceMesh& mesh) const;
   // Whether t, its corners in line through a pole (TriangleRecord::kInLine), stands on a boundary
   // chord with an end at a pole or apex. Bisecting such a triangle only makes another on the same
   // chord with its apex nearer to it, in line again: no split puts it right (a fuzzed fan onto a
