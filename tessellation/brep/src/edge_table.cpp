@@ -251,7 +251,7 @@ bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>*
       cancelled = true;
       return;
     }
-    discretiseEdge(static_cast<EdgeId>(e), level, tolerance);
+    if (!discretiseEdge(static_cast<EdgeId>(e), level, tolerance, cancel)) cancelled = true;
   });
   if (cancelled) return false;
   separateCrossings(level, threads);
@@ -394,16 +394,16 @@ void EdgeTable::findCrossings(FaceId face, int level, std::vector<SegmentId>& ou
   }
 }
 
-void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
+bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std::atomic<bool>* cancel) {
   const Info& info = info_[e];
   EdgePoints& out = levels_[e][static_cast<std::size_t>(level)];
   out.t.clear();
   out.p.clear();
-  if (info.degenerated) return;
+  if (info.degenerated) return true;
   if (info.broken) {
     out.t = {info.first, info.last};
     out.p = {info.p0, info.p1};
-    return;
+    return true;
   }
   const TopoDS_Edge edge = TopoDS::Edge(model_.edgeShapes[e].Oriented(TopAbs_FORWARD));
   std::vector<double> seedT;
@@ -780,6 +780,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       return curve.Value(t);
     };
     std::vector<Item> stack;
+    std::size_t examined = 0;
     gp_Pnt pPrev = pointAt(0, seedT[0]);
     gp_Pnt tmp;
     gp_Vec dPrev, nPrev[2];
@@ -795,6 +796,8 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
       // Depth-first, right half pushed first, so points come out in increasing t.
       stack.push_back({seedT[i - 1], seedT[i], pPrev, pNext, dPrev, dNext, {nPrev[0], nPrev[1]}, {nNext[0], nNext[1]}, 0});
       while (!stack.empty()) {
+        // An edge far off its surface can take tens of milliseconds and thousands of points.
+        if (++examined % 64 == 0 && cancel && cancel->load(std::memory_order_relaxed)) return false;
         Item s = stack.back();
         stack.pop_back();
         if (!misses(s, tol)) {
@@ -818,6 +821,7 @@ void EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol) {
     out.t = {info.first, info.last};
     out.p = {info.p0, info.p1};
   }
+  return true;
 }
 
 }  // namespace cetview::brep

@@ -88,7 +88,8 @@ class EdgeTable {
     // for other curves.
     std::vector<std::uint32_t> arcNeeds, arcSegments;
   };
-  void discretiseEdge(EdgeId e, int level, const Level& tolerance);
+  // Fills levels_[e][level]; false, with the points half made, when `cancel` was raised meanwhile.
+  bool discretiseEdge(EdgeId e, int level, const Level& tolerance, const std::atomic<bool>* cancel);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
   static bool onArcSurfaces(const std::vector<FaceUse>& uses);  // planes, cylinders and cones only
   void shareArcCountsOnCones();

@@ -56,6 +56,8 @@ constexpr std::size_t kRefineGrowth = 256;
 constexpr std::size_t kRefineCeiling = 1000000;
 // Triangles per chunk when a pass's measuring is shared out (a triangle takes a few microseconds).
 constexpr std::size_t kMeasureGrain = 64;
+// Triangles measured or decided between two reads of the cancel flag.
+constexpr std::size_t kCancelGrain = 16;
 
 double signedArea(const std::vector<cet::Point2>& pts, const std::vector<cet::VertexId>& loop) {
   double a = 0;
@@ -708,6 +710,7 @@ void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collap
 // on it, and no later point can repair it (Delaunay keeps the closest apex on a constrained edge).
 void FaceMesher::buildChords(const FaceMesh& mesh) {
   chords_.clear();
+  poleChords_.clear();
   chordGrid_.clear();
   const cet::CetMesh& m = cdt_->mesh();
   auto pos = [&](cet::VertexId id) {
@@ -777,6 +780,7 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
       c.y0 = std::min(c.pa.y, c.pb.y) - reach, c.y1 = std::max(c.pa.y, c.pb.y) + reach;
       x0 = std::min(x0, c.x0), y0 = std::min(y0, c.y0), x1 = std::max(x1, c.x1), y1 = std::max(y1, c.y1);
       lengthSum += std::hypot(c.pb.x - c.pa.x, c.pb.y - c.pa.y);
+      if (singular_[a] || singular_[b]) poleChords_.push_back(static_cast<std::uint32_t>(chords_.size()));
       chords_.push_back(c);
     }
   }
@@ -945,7 +949,8 @@ bool FaceMesher::huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, co
   if (pole < 0) return false;
   const gp_Pnt P = pos(m.vertex(t, pole));
   const gp_Pnt X[2] = {pos(m.vertex(t, (pole + 1) % 3)), pos(m.vertex(t, (pole + 2) % 3))};
-  for (const Chord& c : chords_) {
+  for (const std::uint32_t index : poleChords_) {
+    const Chord& c = chords_[index];
     const double len2 = c.ab.SquareMagnitude();
     if (!(len2 > 0)) continue;
     const double len = std::sqrt(len2);
@@ -1165,13 +1170,21 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
     }
     records_.reserve(triangles);
     pending_.resize(measured_.size());
+    // A pass over a whole level's triangles can take a second on a wild face: the cancel flag is
+    // read every few triangles (a cancelled level resumes to the same mesh: no point or flip is
+    // made before the pass is decided, and records left half measured are dropped).
+    const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     const std::function<void(std::size_t, std::size_t)> measure = [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i)
+      for (std::size_t i = begin; i < end; ++i) {
+        if ((i - begin) % kCancelGrain == 0 && cancelled()) return;
         evaluateTriangle(measured_[i], mesh, angleSplit, stamp, records_.at(measured_[i]), pending_[i]);
+      }
     };
     const std::function<void(std::size_t, std::size_t)> finish = [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i)
+      for (std::size_t i = begin; i < end; ++i) {
+        if ((i - begin) % kCancelGrain == 0 && cancelled()) return;
         if (pending_[i].deferred) finishTriangle(measured_[i], mesh, records_.at(measured_[i]), pending_[i]);
+      }
     };
     if (settings_.sharing && eval_.concurrentSafe()) {
       settings_.sharing->forEach(measured_.size(), kMeasureGrain, measure);
@@ -1180,8 +1193,14 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       measure(0, measured_.size());
       finish(0, measured_.size());
     }
+    if (cancelled()) {
+      for (const cet::TriangleId t : measured_) records_.at(t).v[0] = cet::kNoVertex;
+      return false;
+    }
 
+    std::size_t decided = 0;
     for (const cet::TriangleId t : visit_) {
+      if (++decided % kCancelGrain == 0 && cancelled()) return false;
       const TriangleRecord* r = &records_.at(t);
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1, flipEdge = -1;

@@ -204,6 +204,7 @@ class FaceMesher {
     double near = 0;  // within this of the chord's ends' box the whole clearance is kept; beyond, its side
   };
   std::vector<Chord> chords_;
+  std::vector<std::uint32_t> poleChords_;  // those with an end at a pole or apex
   std::vector<std::vector<std::uint32_t>> chordGrid_;  // chords by cell of a uniform scaled-UV grid
   double gridX0_ = 0, gridY0_ = 0, gridCellX_ = 1, gridCellY_ = 1;
   int gridNx_ = 0, gridNy_ = 0;
