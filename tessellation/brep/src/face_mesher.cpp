@@ -486,13 +486,18 @@ bool FaceMesher::edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& devia
   return true;
 }
 
+gp_Pnt FaceMesher::position(const FaceMesh& mesh, cet::VertexId v) const {
+  const std::size_t o = base_ + v;
+  return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+}
+
 FaceMesher::Corners FaceMesher::corners(cet::TriangleId t, const FaceMesh& mesh) const {
   const cet::CetMesh& m = cdt_->mesh();
   Corners c;
   for (int i = 0; i < 3; ++i) {
     c.v[i] = m.vertex(t, i);
     const std::size_t o = base_ + c.v[i];
-    c.p[i] = gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+    c.p[i] = position(mesh, c.v[i]);
     c.u[i] = mesh.uv[2 * o], c.w[i] = mesh.uv[2 * o + 1];
   }
   const double e = settings_.coincident;
@@ -713,10 +718,6 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
   poleChords_.clear();
   chordGrid_.clear();
   const cet::CetMesh& m = cdt_->mesh();
-  auto pos = [&](cet::VertexId id) {
-    const std::size_t o = base_ + id;
-    return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
-  };
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, lengthSum = 0;
   const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
   for (cet::TriangleId t = 0; t < triangles; ++t) {
@@ -725,8 +726,8 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
       if (!m.isConstrained(t, i)) continue;
       const cet::VertexId a = m.vertex(t, (i + 1) % 3), b = m.vertex(t, (i + 2) % 3);  // domain on the left
       Chord c;
-      c.a = pos(a);
-      c.ab = gp_Vec(c.a, pos(b));
+      c.a = position(mesh, a);
+      c.ab = gp_Vec(c.a, position(mesh, b));
       const double len = c.ab.Magnitude();
       gp_Vec n(0, 0, 0);
       if (!singular_[a]) n += gp_Vec(normal_[a]);
@@ -936,10 +937,6 @@ bool FaceMesher::onChord(cet::TriangleId t) const {
 bool FaceMesher::huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, const FaceMesh& mesh) const {
   if (!(r.flags & TriangleRecord::kPoleCorner)) return false;
   const cet::CetMesh& m = cdt_->mesh();
-  auto pos = [&](cet::VertexId id) {
-    const std::size_t o = base_ + id;
-    return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
-  };
   int pole = -1;
   for (int i = 0; i < 3; ++i) {
     if (!singular_[m.vertex(t, i)]) continue;
@@ -947,8 +944,8 @@ bool FaceMesher::huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, co
     pole = i;
   }
   if (pole < 0) return false;
-  const gp_Pnt P = pos(m.vertex(t, pole));
-  const gp_Pnt X[2] = {pos(m.vertex(t, (pole + 1) % 3)), pos(m.vertex(t, (pole + 2) % 3))};
+  const gp_Pnt P = position(mesh, m.vertex(t, pole));
+  const gp_Pnt X[2] = {position(mesh, m.vertex(t, (pole + 1) % 3)), position(mesh, m.vertex(t, (pole + 2) % 3))};
   for (const std::uint32_t index : poleChords_) {
     const Chord& c = chords_[index];
     const double len2 = c.ab.SquareMagnitude();
@@ -991,7 +988,7 @@ double FaceMesher::facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, con
   gp_Vec ref(0, 0, 0);
   for (int i = 0; i < 3; ++i) {
     const std::size_t o = base_ + v[i];
-    P[i] = gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
+    P[i] = position(mesh, v[i]);
     u[i] = mesh.uv[2 * o], w[i] = mesh.uv[2 * o + 1];
     if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
   }

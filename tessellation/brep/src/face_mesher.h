@@ -125,6 +125,7 @@ class FaceMesher {
     std::uint8_t deferred = 0;  // bit i: edge i waits for the lower triangle across it
   };
   Corners corners(cet::TriangleId t, const FaceMesh& mesh) const;
+  gp_Pnt position(const FaceMesh& mesh, cet::VertexId v) const;  // triangulator vertex v's 3D point
   // Distance from the point of the flat triangle at barycentric b to the surface (and the
   // corresponding-point distance |S(uv) - M|; on elementary surfaces at the centroid only, else 0).
   double sample(const Corners& c, const double b[3], double& corresponding, bool centroid) const;
