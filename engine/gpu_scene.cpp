@@ -21,9 +21,10 @@ constexpr VkDeviceSize kMinTableEntries = 256;
 
 GpuScene::GpuScene(const Device& device, Scene& scene, const GpuSceneOptions& options)
     : device_(device), scene_(scene), options_(options) {
-  // Not on CPU devices unless asked: lavapipe runs a multi-draw indirect call that starts past the
-  // first command (every part but the first) about 40x slower than the same draws issued one by one
-  // (a scene of two parts: 1.4 s against 35 ms per 1280x720 frame); issuing draws costs it little.
+  // Not on CPU devices unless asked: there the one-by-one path's culling of clusters outside the
+  // view or facing away (face_culling.h) spares lavapipe's front end, and issuing draws costs it
+  // little. (Multi-part scenes once drew 40x slower on lavapipe with indirect draws, and 30-180x
+  // slower on an NVIDIA H200: that was the wrap-round of the draw loop in recordFaceDraws().)
   const bool cpu = device.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   indirect_ = options.indirectDraws && (!cpu || options.indirectDrawsOnCpu) &&
               device.features.multiDrawIndirect && device.features.drawIndirectFirstInstance;
@@ -572,8 +573,10 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     if (outsideFrustum(cullView, sphereAround(part.bounds))) continue;  // the whole instance is out of view
     if (indirect_) {
       vkCmdPushConstants(cmd, layout, kStages, 0, sizeof(constants), &constants);
-      for (std::uint32_t first = part.firstFace; first < end; first += maxDraws) {
-        std::uint32_t count = std::min(end - first, maxDraws);
+      // Step by the count drawn, not by the limit: GPUs report a limit of 2^32 - 1, and adding
+      // that wraps `first` round to below the part, drawing other parts' faces in this transform.
+      for (std::uint32_t first = part.firstFace, count = 0; first < end; first += count) {
+        count = std::min(end - first, maxDraws);
         vkCmdDrawIndexedIndirect(cmd, buffers_[kFaceDraws].buffer.buffer, first * kFaceDrawSize, count,
                                  static_cast<std::uint32_t>(kFaceDrawSize));
         ++faceDrawCalls_;
@@ -665,8 +668,8 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(constants), &constants);
     if (indirect_) {
-      for (std::uint32_t first = part.firstEdge; first < end; first += maxDraws) {
-        std::uint32_t count = std::min(end - first, maxDraws);
+      for (std::uint32_t first = part.firstEdge, count = 0; first < end; first += count) {  // as for faces
+        count = std::min(end - first, maxDraws);
         vkCmdDrawIndirect(cmd, buffers_[kEdgeDraws].buffer.buffer, first * kEdgeDrawSize, count,
                           static_cast<std::uint32_t>(kEdgeDrawSize));
         ++edgeDrawCalls_;

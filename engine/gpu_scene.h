@@ -60,8 +60,8 @@ struct GpuSceneOptions {
   std::uint64_t initialIndexCapacity = 1u << 18;      // uint32 indices
   std::uint64_t initialEdgePointCapacity = 1u << 14;  // edge points
   bool indirectDraws = true;  // multi-draw indirect where the device allows; false: one by one, per run
-  // Also on CPU devices (lavapipe), where it is off by default: there a multi-draw indirect call
-  // that starts past the first command runs about 40x slower than the same draws one by one.
+  // Also on CPU devices (lavapipe), where it is off by default: there the one-by-one path's
+  // culling of clusters that cannot show spares the front end (see the constructor).
   bool indirectDrawsOnCpu = false;
   // Draws one by one: the ranges of one colour in one call where the device has VK_EXT_multi_draw;
   // false: one call per range.

@@ -3,13 +3,17 @@
 // time at the same final deflection; bytes uploaded per frame; the longest frame while loading
 // against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU);
 // like the window, the loop draws a frame only when something new arrived.
-//   progressive_bench [--threads N] [--deflection 0.1%] [--repeat R] [--no-brepmesh] MODEL...
+//   progressive_bench [--threads N] [--deflection 0.1%] [--repeat R] [--no-brepmesh]
+//                     [--direct-draws | --indirect-draws] MODEL...
 // (MODEL: a file or "demo"; --repeat loads each model R times, BRepMesh once; --no-brepmesh skips
-// the reference, for quick runs of the progressive side alone.)
+// the reference, for quick runs of the progressive side alone; --direct-draws and --indirect-draws
+// force one drawing path (gpu_scene.h) where the device would take the other, to compare them.
+// "idle cpu" is the CPU time of drawing one idle frame, driver included; "draws" its draw calls.)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <thread>
 #include <vector>
@@ -27,18 +31,29 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+// CPU time of the calling thread: recording and submitting a frame, driver included.
+double threadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
 
 struct Row {
   std::string model;
   std::size_t faces = 0;
-  double brepmesh = 0, firstFrame = 0, lastLevel = 0, longestLoading = 0, idle = 0;
+  double brepmesh = 0, firstFrame = 0, lastLevel = 0, longestLoading = 0, idle = 0, idleCpu = 0;
+  std::uint32_t drawCalls = 0;  // faces and edges, in an idle frame
   std::vector<double> levelMs;
   double meanBytes = 0, maxBytes = 0;
   std::string error;
 };
 
+// Which path draws the faces: the device's default (multi-draw indirect on GPUs, one by one on
+// CPU devices), or one of them forced.
+enum class Draws { kDefault, kDirect, kIndirect };
+
 Row measure(const std::string& path, const cetview::brep::MeshParams& params, unsigned threads,
-            const cetview::engine::Device& device, bool reference, double brepmeshMs) {
+            const cetview::engine::Device& device, bool reference, double brepmeshMs, Draws draws) {
   namespace brep = cetview::brep;
   namespace engine = cetview::engine;
   Row row;
@@ -60,7 +75,10 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   // The window is open before a model loads: the renderer (and its pipelines, which lavapipe
   // compiles when they are created and, for their machine code, at their first draw: warmUp())
   // exists before the clock starts, as in the viewer once it has shown a model.
-  auto renderer = engine::Renderer::createHeadless(device, {1280, 720});
+  engine::RendererOptions rendererOptions;
+  rendererOptions.scene.indirectDraws = draws != Draws::kDirect;
+  rendererOptions.scene.indirectDrawsOnCpu = draws == Draws::kIndirect;
+  auto renderer = engine::Renderer::createHeadless(device, {1280, 720}, rendererOptions);
   if (!renderer) {
     row.error = renderer.error().message;
     return row;
@@ -124,15 +142,20 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   row.firstFrame = row.levelMs.front();
   row.lastLevel = row.levelMs.back();
   row.meanBytes = bytes / static_cast<double>(frames);
-  std::vector<double> idle;
+  std::vector<double> idle, idleCpu;
   for (int i = 0; i < 9; ++i) {
     const auto t = Clock::now();
+    const double cpu = threadCpuMs();
     if (!r.drawFrame(camera)) break;
+    idleCpu.push_back(threadCpuMs() - cpu);
     idle.push_back(msSince(t));
   }
+  row.drawCalls = r.lastFaceDrawCalls() + r.lastEdgeDrawCalls();
   if (auto s = r.waitIdle(); !s) row.error = s.error().message;
   std::sort(idle.begin(), idle.end());
+  std::sort(idleCpu.begin(), idleCpu.end());
   row.idle = idle.empty() ? 0 : idle[idle.size() / 2];
+  row.idleCpu = idleCpu.empty() ? 0 : idleCpu[idleCpu.size() / 2];
   return row;
 }
 
@@ -146,6 +169,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> models;
   int repeat = 1;
   bool reference = true;
+  Draws draws = Draws::kDefault;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
@@ -153,6 +177,10 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[++i]));
     } else if (!std::strcmp(argv[i], "--no-brepmesh")) {
       reference = false;
+    } else if (!std::strcmp(argv[i], "--direct-draws")) {
+      draws = Draws::kDirect;
+    } else if (!std::strcmp(argv[i], "--indirect-draws")) {
+      draws = Draws::kIndirect;
     } else if (!std::strcmp(argv[i], "--deflection") && i + 1 < argc) {
       if (std::string e = brep::parseDeflection(argv[++i], params.chordal); !e.empty()) {
         std::fprintf(stderr, "progressive_bench: %s\n", e.c_str());
@@ -173,13 +201,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "progressive_bench: %s\n", device.error().message.c_str());
     return 1;
   }
-  std::printf("device: %s, %u tessellation thread(s), 1280x720\n", device->name.c_str(), threads);
-  std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %9s %11s  %s\n", "model", "faces", "brepmesh ms", "1st frame",
-              "ratio", "final ms", "max frame ms", "idle ms", "MB/frame", "max MB/frm", "ms per level");
+  std::printf("device: %s, %u tessellation thread(s), 1280x720%s\n", device->name.c_str(), threads,
+              draws == Draws::kDirect ? ", draws one by one" : draws == Draws::kIndirect ? ", indirect draws" : "");
+  std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %8s %6s %9s %11s  %s\n", "model", "faces", "brepmesh ms",
+              "1st frame", "ratio", "final ms", "max frame ms", "idle ms", "idle cpu", "draws", "MB/frame",
+              "max MB/frm", "ms per level");
   double brepmeshMs = 0;  // of the model's first run, shown again on its repeats
   for (int run = 0; run < repeat * static_cast<int>(models.size()); ++run) {
     const std::string& m = models[static_cast<std::size_t>(run / repeat)];
-    const Row row = measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs);
+    const Row row = measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs, draws);
     brepmeshMs = row.brepmesh;
     const std::string name = m.size() > 34 ? "..." + m.substr(m.size() - 31) : m;
     if (!row.error.empty()) {
@@ -188,9 +218,10 @@ int main(int argc, char** argv) {
     }
     std::string levels;
     for (double t : row.levelMs) levels += (levels.empty() ? "" : " ") + std::to_string(static_cast<int>(t));
-    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %11.1f %12.1f %10.1f %9.2f %11.2f  %s\n", name.c_str(), row.faces,
-                row.brepmesh, row.firstFrame, row.firstFrame / row.brepmesh, row.lastLevel, row.longestLoading,
-                row.idle, row.meanBytes / 1e6, row.maxBytes / 1e6, levels.c_str());
+    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %11.1f %12.1f %10.1f %8.1f %6u %9.2f %11.2f  %s\n", name.c_str(),
+                row.faces, row.brepmesh, row.firstFrame, row.firstFrame / row.brepmesh, row.lastLevel,
+                row.longestLoading, row.idle, row.idleCpu, row.drawCalls, row.meanBytes / 1e6, row.maxBytes / 1e6,
+                levels.c_str());
     std::fflush(stdout);
   }
   engine::destroyDevice(*device);
