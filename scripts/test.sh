@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh machine, builds everything (Release, warnings as errors) and runs every test suite,
 # then the sanitizer runs: every suite under AddressSanitizer + UndefinedBehaviorSanitizer, and the
-# progressive stream (worker threads, rings, cancellation) and the threaded tessellation (work sharing)
-# under ThreadSanitizer, each in its own tree.
+# progressive stream (worker threads, rings, cancellation), the threaded tessellation (work sharing)
+# and the fallback's BRepMesh thread under ThreadSanitizer, each in its own tree.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
@@ -19,10 +19,10 @@ LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
   UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
   ctest --test-dir build-asan --output-on-failure --parallel 2 --timeout 900
 
-echo "== ThreadSanitizer: progressive stream, threaded tessellation, work sharing =="
+echo "== ThreadSanitizer: progressive stream, threaded tessellation, work sharing, fallback thread =="
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCETVIEW_SANITIZE=thread \
   -DCETVIEW_BUILD_BENCH=OFF -DCETVIEW_WERROR=ON
 cmake --build build-tsan --parallel 2 --target stream_tests brep_tests
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/stream/stream_tests
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/brep/brep_tests \
-  --gtest_filter='WorkSharing.*:Progressive.*'
+  --gtest_filter='WorkSharing.*:Progressive.*:Isolation.TheFallback*:Isolation.AFallback*'

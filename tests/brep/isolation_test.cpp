@@ -3,8 +3,15 @@
 // clean run gives.
 #include <gtest/gtest.h>
 
-#include <BRepPrimAPI_MakeSphere.hxx>
+#include <atomic>
+#include <chrono>
+#include <thread>
 
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include "brepmesh_fallback.h"
 #include "face_mesher.h"
 #include "test_support.h"
 
@@ -93,6 +100,70 @@ TEST(Isolation, AFaceDeferredOnEveryLevelMeshesItsFallbackOnce) {
   ASSERT_GT(m.levels.size(), 1u);
   EXPECT_FALSE(m.levels.back().empty());
   for (std::size_t k = 1; k < m.levels.size(); ++k) EXPECT_EQ(m.levels[k], m.levels[0]) << "level " << k;
+}
+
+// The cancellable fallback: with the flag raised it returns at once and appends nothing; BRepMesh
+// goes on on its own thread, and the next call takes up the same job. Without a flag it runs inline.
+TEST(Isolation, TheFallbackReturnsAtOnceWhenCancelledAndTakesUpItsJobAgain) {
+  const TopoDS_Shape sphere = BRepPrimAPI_MakeSphere(10).Shape();
+  const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(sphere, TopAbs_FACE).Current());
+  FaceMesh inline_;
+  std::vector<std::uint32_t> inlineIndices;
+  std::string failure;
+  ASSERT_EQ(meshFaceWithBRepMesh(face, false, 0.01, 0.3, inline_, inlineIndices, failure), FallbackResult::kMeshed)
+      << failure;
+  std::atomic<bool> cancel{true};
+  FaceMesh mesh;
+  std::vector<std::uint32_t> indices;
+  CancellableFallback fallback;
+  EXPECT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel), FallbackResult::kCancelled);
+  EXPECT_EQ(mesh.vertexCount(), 0u);
+  EXPECT_TRUE(indices.empty());
+  cancel = false;
+  ASSERT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel), FallbackResult::kMeshed) << failure;
+  EXPECT_EQ(indices, inlineIndices);
+  EXPECT_EQ(mesh.positions, inline_.positions);
+  EXPECT_EQ(mesh.normals, inline_.normals);
+  // Abandoned while BRepMesh runs: destroyed without waiting (the thread ends on its own).
+  CancellableFallback abandoned;
+  cancel = true;
+  EXPECT_EQ(abandoned.run(face, false, 0.003, 0.2, mesh, indices, failure, &cancel), FallbackResult::kCancelled);
+}
+
+// A run of level 0 cancelled while crossing_boundary.brep's face 1 makes its fallback mesh
+// (BRepMesh, from about 15 ms into the run to 100-180 ms) returns without waiting for it: that face
+// has no level yet (it had level 0 when the run waited for BRepMesh). Resumed, the run makes what an
+// uninterrupted one makes: the same meshes, statuses and reasons (the domain is not rebuilt, the
+// reason not repeated).
+TEST(Isolation, AFallbackCancelledAnywhereResumesToTheSameMesh) {
+  auto model = test::loadTestData("crossing_boundary.brep");
+  ASSERT_TRUE(model);
+  const MeshParams params = test::relative(0.00011235273724638671, 10.625467307545586);
+  auto clean = test::tessellate(*model, params);
+  ASSERT_TRUE(clean);
+  int cancelled = 0;
+  for (const double ms : {5.0, 30.0, 60.0}) {
+    auto t = Tessellator::create(*model, params).tessellator;
+    ASSERT_TRUE(t);
+    std::atomic<bool> cancel{false};
+    std::thread raise([&] {
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(ms));
+      cancel = true;
+    });
+    const bool finished = t->run(1, {}, &cancel, 0);  // level 0: face 1 calls BRepMesh at once
+    raise.join();
+    cancel = false;
+    if (!finished) {
+      ++cancelled;
+      EXPECT_TRUE(t->faceMesh(1).levels.empty()) << "cancelled after " << ms << " ms";
+    }
+    ASSERT_TRUE(t->run(1, {}, &cancel));
+    for (FaceId f = 0; f < model->faces().size(); ++f) {
+      expectSameFace(*clean, *t, f);
+      EXPECT_EQ(t->report(f).reason, clean->report(f).reason) << "cancelled after " << ms << " ms, face " << f;
+    }
+  }
+  EXPECT_GE(cancelled, 2) << "level 0 ran to its end before the flag";
 }
 
 // The work bound (MeshParams::maxPointsPerFaceLevel): a face whose refinement would add more points

@@ -1,9 +1,16 @@
 #include "brepmesh_fallback.h"
 
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
+#include <IMeshTools_Parameters.hxx>
+#include <Message_ProgressIndicator.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -12,20 +19,83 @@
 #include "surface_eval.h"
 
 namespace cetview::brep {
+namespace {
 
-bool meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
-                          FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure) {
+// The job threads of CancellableFallback. When the program exits (this object is destroyed before
+// OpenCASCADE's own statics, having been made later), every BRepMesh still running on one is told
+// to stop at its next check, and the exit waits for them.
+class JobThreads {
+ public:
+  static JobThreads& instance() {
+    static JobThreads threads;
+    return threads;
+  }
+  JobThreads(const JobThreads&) = delete;
+  JobThreads& operator=(const JobThreads&) = delete;
+  ~JobThreads() {
+    stopping_.store(true);
+    std::unique_lock<std::mutex> lock(mutex_);
+    ended_.wait(lock, [this] { return running_ == 0; });
+  }
+  void started() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++running_;
+  }
+  void ended() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    --running_;
+    ended_.notify_all();
+  }
+  bool stopping() const { return stopping_.load(std::memory_order_relaxed); }
+
+ private:
+  JobThreads() = default;
+  std::mutex mutex_;
+  std::condition_variable ended_;
+  int running_ = 0;
+  std::atomic<bool> stopping_{false};
+};
+
+// BRepMesh asks its progress indicator whether to stop: when the job is abandoned, or at exit.
+class StopIndicator : public Message_ProgressIndicator {
+ public:
+  explicit StopIndicator(const std::atomic<bool>& abandoned) : abandoned_(abandoned) {}
+  Standard_Boolean UserBreak() override {
+    return abandoned_.load(std::memory_order_relaxed) || JobThreads::instance().stopping();
+  }
+
+ protected:
+  void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
+
+ private:
+  const std::atomic<bool>& abandoned_;
+};
+
+// A copy: BRepMesh stores polygons on the edges it meshes, and the originals are shared with faces
+// other threads are meshing. The geometry is copied too, so the copy outlives the model.
+TopoDS_Face privateCopy(const TopoDS_Face& face) {
+  BRepBuilderAPI_Copy copier(face, Standard_True, Standard_False);
+  return TopoDS::Face(copier.Shape());
+}
+
+void runBRepMesh(const TopoDS_Face& face, double chordal, double angle, const Message_ProgressRange& range) {
+  IMeshTools_Parameters parameters;
+  parameters.Deflection = chordal;
+  parameters.Angle = angle;
+  parameters.Relative = Standard_False;
+  parameters.InParallel = Standard_False;
+  BRepMesh_IncrementalMesh mesher(face, parameters, range);
+}
+
+// The triangulation BRepMesh left on `face`, appended with exact normals.
+FallbackResult appendTriangulation(const TopoDS_Face& face, bool reversed, FaceMesh& mesh,
+                                   std::vector<std::uint32_t>& indices, std::string& failure) {
   try {
-    // A copy: BRepMesh stores polygons on the edges it meshes, and the originals are shared with
-    // faces other threads are meshing.
-    BRepBuilderAPI_Copy copier(forwardFace, Standard_True, Standard_False);
-    const TopoDS_Face face = TopoDS::Face(copier.Shape());
-    BRepMesh_IncrementalMesh mesher(face, chordal, Standard_False, angle, Standard_False);
     TopLoc_Location loc;
     const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
     if (tri.IsNull() || tri->NbTriangles() == 0) {
       failure = "BRepMesh produced no triangles";
-      return false;
+      return FallbackResult::kFailed;
     }
     const gp_Trsf trsf = loc.Transformation();
     SurfaceEval eval(face);
@@ -60,11 +130,88 @@ bool meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double 
         indices.insert(indices.end(), {A, B, C});
       }
     }
-    return true;
+    return FallbackResult::kMeshed;
   } catch (const Standard_Failure& e) {
     failure = std::string("BRepMesh failed: ") + e.GetMessageString();
-    return false;
+    return FallbackResult::kFailed;
   }
+}
+
+}  // namespace
+
+FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
+                                    FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure) {
+  try {
+    const TopoDS_Face face = privateCopy(forwardFace);
+    runBRepMesh(face, chordal, angle, Message_ProgressRange());
+    return appendTriangulation(face, reversed, mesh, indices, failure);
+  } catch (const Standard_Failure& e) {
+    failure = std::string("BRepMesh failed: ") + e.GetMessageString();
+    return FallbackResult::kFailed;
+  }
+}
+
+struct CancellableFallback::Job {
+  TopoDS_Face face;  // the private copy BRepMesh meshes
+  std::atomic<bool> abandoned{false};
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;    // under mutex
+  std::string failure;  // BRepMesh threw (written before done)
+};
+
+CancellableFallback::~CancellableFallback() {
+  if (job_) job_->abandoned.store(true);
+}
+
+FallbackResult CancellableFallback::run(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
+                                        FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure,
+                                        const std::atomic<bool>* cancel) {
+  if (cancel == nullptr) return meshFaceWithBRepMesh(forwardFace, reversed, chordal, angle, mesh, indices, failure);
+  if (!job_) {
+    auto job = std::make_shared<Job>();
+    try {
+      job->face = privateCopy(forwardFace);
+    } catch (const Standard_Failure& e) {
+      failure = std::string("BRepMesh failed: ") + e.GetMessageString();
+      return FallbackResult::kFailed;
+    }
+    JobThreads& threads = JobThreads::instance();
+    threads.started();
+    std::thread([job, &threads, chordal, angle]() mutable {
+      std::string thrown;
+      try {
+        Handle(StopIndicator) indicator = new StopIndicator(job->abandoned);
+        runBRepMesh(job->face, chordal, angle, indicator->Start());
+      } catch (const Standard_Failure& e) {
+        thrown = std::string("BRepMesh failed: ") + e.GetMessageString();
+      } catch (...) {
+        thrown = "BRepMesh failed";
+      }
+      {
+        std::lock_guard<std::mutex> lock(job->mutex);
+        job->failure = thrown;
+        job->done = true;
+      }
+      job->finished.notify_all();
+      job.reset();  // the face's copy goes here or with its last owner, before ended()
+      threads.ended();
+    }).detach();
+    job_ = std::move(job);
+  }
+  {
+    std::unique_lock<std::mutex> lock(job_->mutex);
+    while (!job_->done) {
+      if (cancel->load(std::memory_order_relaxed)) return FallbackResult::kCancelled;
+      job_->finished.wait_for(lock, std::chrono::milliseconds(2));
+    }
+  }
+  const std::shared_ptr<Job> job = std::move(job_);
+  if (!job->failure.empty()) {
+    failure = job->failure;
+    return FallbackResult::kFailed;
+  }
+  return appendTriangulation(job->face, reversed, mesh, indices, failure);
 }
 
 }  // namespace cetview::brep

@@ -24,7 +24,6 @@
 
 #include <Standard_Failure.hxx>
 
-#include "brepmesh_fallback.h"
 #include "cet/predicates.h"
 #include "edge_table.h"
 #include "facet_rules.h"
@@ -1372,18 +1371,28 @@ FaceStatus FaceMesher::leaveEmpty(const std::string& why, FaceMesh& mesh, FaceRe
   return fallbackStatus_;
 }
 
-FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report) {
+FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report,
+                                   const std::atomic<bool>* cancel) {
   cdt_.reset();
   records_.clear();
-  fallback_ = true;
   std::vector<std::uint32_t> indices;
   std::string failure;
   // A deferred coarse level has made the fallback mesh already (at the same tolerances): BRepMesh
   // can take seconds on a face whose boundary crosses itself.
-  const bool ok = !deferredIndices_.empty() ||
-                  meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle,
-                                       mesh, indices, failure);
-  if (!deferredIndices_.empty()) indices = deferredIndices_;
+  bool ok = true;
+  if (deferredIndices_.empty()) {
+    const FallbackResult result = fallbackJob_.run(topology_.face, settings_.reversed, settings_.finalChordal,
+                                                   settings_.finalAngle, mesh, indices, failure, cancel);
+    if (result == FallbackResult::kCancelled) {
+      pendingFallback_ = why;
+      return FaceStatus::kCancelled;
+    }
+    ok = result == FallbackResult::kMeshed;
+  } else {
+    indices = deferredIndices_;
+  }
+  pendingFallback_.clear();
+  fallback_ = true;
   fallbackStatus_ = ok ? FaceStatus::kFallback : FaceStatus::kEmpty;
   report.status = fallbackStatus_;
   report.reason = ok ? why : why + "; fallback failed too: " + failure;
@@ -1394,14 +1403,21 @@ FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceR
 
 // A coarse level whose boundary polygon crosses itself in UV (coarse chords of close loops can cross
 // where finer ones do not): that level shows the fallback mesh, and the next level starts afresh.
-FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report) {
+FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report,
+                                  const std::atomic<bool>* cancel) {
   cdt_.reset();
   records_.clear();
   if (deferredIndices_.empty()) {
     std::string failure;
-    if (!meshFaceWithBRepMesh(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle, mesh,
-                              deferredIndices_, failure)) {
-      return useFallback(why + "; fallback failed too: " + failure, mesh, report);
+    const FallbackResult result = fallbackJob_.run(topology_.face, settings_.reversed, settings_.finalChordal,
+                                                   settings_.finalAngle, mesh, deferredIndices_, failure, cancel);
+    if (result == FallbackResult::kCancelled) {
+      pendingDefer_ = why;
+      return FaceStatus::kCancelled;
+    }
+    pendingDefer_.clear();
+    if (result == FallbackResult::kFailed) {
+      return useFallback(why + "; fallback failed too: " + failure, mesh, report, cancel);
     }
   }
   repairs_.push_back("level " + std::to_string(k) + " shows the fallback mesh: " + why);
@@ -1424,7 +1440,10 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     report.status = fallbackStatus_;
     return fallbackStatus_;
   }
-  if (!topology_.failure.empty()) return useFallback(topology_.failure, mesh, report);
+  // A fallback the flag stopped: BRepMesh again, for the same reason (the domain is not rebuilt).
+  if (!pendingFallback_.empty()) return useFallback(pendingFallback_, mesh, report, cancel);
+  if (!pendingDefer_.empty()) return deferLevel(k, pendingDefer_, mesh, report, cancel);
+  if (!topology_.failure.empty()) return useFallback(topology_.failure, mesh, report, cancel);
   if (!areaChecked_) {
     areaChecked_ = true;
     if (eval_.collapsed()) return leaveEmpty("the surface has no area (it collapses onto a curve or a point)", mesh, report);
@@ -1443,14 +1462,14 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
         ok = buildDomain(k, edges, mesh, problem);
       }
     }
-    if (!ok && !finalLevel) return deferLevel(k, problem, mesh, report);
-    if (!ok) return useFallback(problem, mesh, report);
+    if (!ok && !finalLevel) return deferLevel(k, problem, mesh, report, cancel);
+    if (!ok) return useFallback(problem, mesh, report, cancel);
     if (!refinementStopped_ && !refine(k, level, mesh, cancel)) return FaceStatus::kCancelled;
   } catch (const Standard_Failure& e) {
-    return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report);
+    return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report, cancel);
   }
   std::vector<std::uint32_t> indices = snapshot(mesh);
-  if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report);
+  if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report, cancel);
   if (!strayReported_) {
     // Edges that stray from the surface by more than the deflection (within their own tolerance):
     // the mesh keeps to the shared edge points, so it cannot keep the deflection beside them.

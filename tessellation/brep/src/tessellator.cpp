@@ -182,7 +182,8 @@ void TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::strin
   bool meshed = false;
   try {
     const TopoDS_Face forward = TopoDS::Face(model.impl().faceShapes[face].Oriented(TopAbs_FORWARD));
-    meshed = meshFaceWithBRepMesh(forward, model.faces()[face].reversed, chordal, angle, s.mesh, indices, failure);
+    meshed = meshFaceWithBRepMesh(forward, model.faces()[face].reversed, chordal, angle, s.mesh, indices, failure) ==
+             FallbackResult::kMeshed;
   } catch (const std::exception& e) {
     failure = e.what();
   } catch (const Standard_Failure& e) {
