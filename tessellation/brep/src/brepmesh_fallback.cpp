@@ -3,6 +3,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -71,6 +72,8 @@ class StopIndicator : public Message_ProgressIndicator {
   const std::atomic<bool>& abandoned_;
 };
 
+std::string failureOf(const Standard_Failure& e) { return std::string("BRepMesh failed: ") + e.GetMessageString(); }
+
 // A copy: BRepMesh stores polygons on the edges it meshes, and the originals are shared with faces
 // other threads are meshing. The geometry is copied too, so the copy outlives the model.
 TopoDS_Face privateCopy(const TopoDS_Face& face) {
@@ -132,7 +135,7 @@ FallbackResult appendTriangulation(const TopoDS_Face& face, bool reversed, FaceM
     }
     return FallbackResult::kMeshed;
   } catch (const Standard_Failure& e) {
-    failure = std::string("BRepMesh failed: ") + e.GetMessageString();
+    failure = failureOf(e);
     return FallbackResult::kFailed;
   }
 }
@@ -146,7 +149,7 @@ FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reverse
     runBRepMesh(face, chordal, angle, Message_ProgressRange());
     return appendTriangulation(face, reversed, mesh, indices, failure);
   } catch (const Standard_Failure& e) {
-    failure = std::string("BRepMesh failed: ") + e.GetMessageString();
+    failure = failureOf(e);
     return FallbackResult::kFailed;
   }
 }
@@ -173,30 +176,35 @@ FallbackResult CancellableFallback::run(const TopoDS_Face& forwardFace, bool rev
     try {
       job->face = privateCopy(forwardFace);
     } catch (const Standard_Failure& e) {
-      failure = std::string("BRepMesh failed: ") + e.GetMessageString();
+      failure = failureOf(e);
       return FallbackResult::kFailed;
     }
     JobThreads& threads = JobThreads::instance();
     threads.started();
-    std::thread([job, &threads, chordal, angle]() mutable {
-      std::string thrown;
-      try {
-        Handle(StopIndicator) indicator = new StopIndicator(job->abandoned);
-        runBRepMesh(job->face, chordal, angle, indicator->Start());
-      } catch (const Standard_Failure& e) {
-        thrown = std::string("BRepMesh failed: ") + e.GetMessageString();
-      } catch (...) {
-        thrown = "BRepMesh failed";
-      }
-      {
-        std::lock_guard<std::mutex> lock(job->mutex);
-        job->failure = thrown;
-        job->done = true;
-      }
-      job->finished.notify_all();
-      job.reset();  // the face's copy goes here or with its last owner, before ended()
+    try {
+      std::thread([job, &threads, chordal, angle]() mutable {
+        std::string thrown;
+        try {
+          Handle(StopIndicator) indicator = new StopIndicator(job->abandoned);
+          runBRepMesh(job->face, chordal, angle, indicator->Start());
+        } catch (const Standard_Failure& e) {
+          thrown = failureOf(e);
+        } catch (...) {
+          thrown = "BRepMesh failed";
+        }
+        {
+          std::lock_guard<std::mutex> lock(job->mutex);
+          job->failure = thrown;
+          job->done = true;
+        }
+        job->finished.notify_all();
+        job.reset();  // the face's copy goes here or with its last owner, before ended()
+        threads.ended();
+      }).detach();
+    } catch (const std::system_error&) {  // no thread to be had: BRepMesh here, to the end
       threads.ended();
-    }).detach();
+      return meshFaceWithBRepMesh(forwardFace, reversed, chordal, angle, mesh, indices, failure);
+    }
     job_ = std::move(job);
   }
   {
