@@ -110,5 +110,20 @@ TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
   test::testDataEveryLevel("ellipse_past_the_knots.brep", test::relative(0.00056717801270646954, 34.027847714961467));
 }
 
+// zero_area_along_a_side.brep (face_fuzz seed 101, input 79): a rational patch whose u speed runs
+// from 0.06 to 3e8, meshed at 0.2406%. Level 1 (tolerance 706) has triangles without area along its
+// side u = 1, whose iso-line is a straight line in 3D that runs 20x faster near v = 0.36 than on
+// average. The grid over such a triangle's (u, v) has only 17 distinct points along its one line,
+// all beyond other local minima of the distance: one read 2160 (3.06x), where the triangle lies on
+// the surface. The measure scans such triangles at as many points as a full grid has.
+TEST(ZeroAreaAlongASide, ATriangleOnTheSideMeasuresItsDistanceToTheSide) {
+  const TopoDS_Face face = firstFace("zero_area_along_a_side.brep");
+  ASSERT_FALSE(face.IsNull());
+  const SurfaceEval eval(face);
+  const double uv[6] = {0.99999999999999978, 0.36186550176886012, 0.99999999999999989, 0.19238185096072263,
+                        0.99999999999999978, 0.36222043867013715};
+  EXPECT_LT(measuredTriangle(eval, uv), 0.2 * 706.269) << "2160 from 17 points along the side";
+}
+
 }  // namespace
 }  // namespace cetview::brep
