@@ -75,16 +75,21 @@ double measuredTriangle(const SurfaceEval& eval, const double uv[6]) {
   return measureDeviation(eval, positions, uv, idx, 1);
 }
 
+// The same on the first face of a test data file.
+double measuredTriangle(const std::string& file, const double uv[6]) {
+  const TopoDS_Face face = firstFace(file);
+  EXPECT_FALSE(face.IsNull()) << file;
+  if (face.IsNull()) return 1e300;
+  return measuredTriangle(SurfaceEval(face), uv);
+}
+
 TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
-  const TopoDS_Face face = firstFace("seam_beside_tiny_spans.brep");
-  ASSERT_FALSE(face.IsNull());
-  const SurfaceEval eval(face);
   // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
   // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface
   // comes within 0.037 of the seam chord's midpoint; the measure read up to 0.0965 on the chord
   // (1.75x the level's tolerance).
   const double uv[6] = {2.22044604925e-16, -999.999, 0, -999.999125, 0.0416666666667, -999.9990625};
-  EXPECT_LT(measuredTriangle(eval, uv), 0.055) << "0.0965 when no step could stay by the seam";
+  EXPECT_LT(measuredTriangle("seam_beside_tiny_spans.brep", uv), 0.055) << "0.0965 when no step could stay by the seam";
 }
 
 TEST(SeamBesideTinySpans, EveryLevelMeasuresWithinItsTolerance) {
@@ -98,12 +103,9 @@ TEST(SeamBesideTinySpans, EveryLevelMeasuresWithinItsTolerance) {
 // extrapolated surface finds it 5.5 away; the measure's last damped steps may go as far as the
 // triangle's own corners.
 TEST(FacePastItsKnots, ATriangleOnTheExtrapolatedSurfaceMeasuresItsDistanceToIt) {
-  const TopoDS_Face face = firstFace("ellipse_past_the_knots.brep");
-  ASSERT_FALSE(face.IsNull());
-  const SurfaceEval eval(face);
   const double uv[6] = {26.335810123503045, 849.70078483817008, 26.33725742236188, 849.71445272046481,
                         26.334362824644273, 849.68711695587581};
-  EXPECT_LT(measuredTriangle(eval, uv), 27.3) << "134.5 when every step stopped at the knots";
+  EXPECT_LT(measuredTriangle("ellipse_past_the_knots.brep", uv), 27.3) << "134.5 when every step stopped at the knots";
 }
 
 TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
@@ -117,12 +119,9 @@ TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
 // all beyond other local minima of the distance: one read 2160 (3.06x), where the triangle lies on
 // the surface. The measure scans such triangles at as many points as a full grid has.
 TEST(ZeroAreaAlongASide, ATriangleOnTheSideMeasuresItsDistanceToTheSide) {
-  const TopoDS_Face face = firstFace("zero_area_along_a_side.brep");
-  ASSERT_FALSE(face.IsNull());
-  const SurfaceEval eval(face);
   const double uv[6] = {0.99999999999999978, 0.36186550176886012, 0.99999999999999989, 0.19238185096072263,
                         0.99999999999999978, 0.36222043867013715};
-  EXPECT_LT(measuredTriangle(eval, uv), 0.2 * 706.269) << "2160 from 17 points along the side";
+  EXPECT_LT(measuredTriangle("zero_area_along_a_side.brep", uv), 0.2 * 706.269) << "2160 from 17 points along the side";
 }
 
 }  // namespace
