@@ -83,6 +83,31 @@ TEST(Isolation, FailureAfterSomeLevelsKeepsTheCompletedOnes) {
   }
 }
 
+// A face whose mesher throws is meshed by the fallback, cancellable like any other: with the flag
+// raised, advanceFace() returns kCancelled at once and the face has no level; the next call makes
+// what an uninterrupted run makes.
+TEST(Isolation, AThrowingFaceWhoseFallbackIsCancelledResumesToTheSameMesh) {
+  auto m = test::loadDemo();
+  auto clean = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  auto t = Tessellator::create(*m, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(clean && t);
+  const FaceId bad = 3;
+  clean->failFaceForTesting(bad);
+  t->failFaceForTesting(bad);
+  ASSERT_TRUE(clean->run(2));
+  for (int k = 0; k <= t->lastLevel(); ++k) ASSERT_TRUE(t->discretiseEdges(k));
+  std::atomic<bool> cancel{true};
+  EXPECT_EQ(t->advanceFace(bad, t->lastLevel(), &cancel), FaceStatus::kCancelled);
+  EXPECT_TRUE(t->faceMesh(bad).levels.empty());
+  cancel = false;
+  ASSERT_TRUE(t->run(2, {}, &cancel));
+  EXPECT_EQ(t->report(bad).status, FaceStatus::kFallback);
+  for (FaceId f = 0; f < m->faces().size(); ++f) {
+    expectSameFace(*clean, *t, f);
+    EXPECT_EQ(t->report(f).reason, clean->report(f).reason) << "face " << f;
+  }
+}
+
 // tests/brep/data/crossing_boundary.brep, written by face_fuzz: face 1's boundary crosses itself in
 // UV on every level, so its coarse levels show BRepMesh's mesh and the final level falls back to it.
 // The final level takes the mesh the coarse levels made (at the same final tolerances) instead of

@@ -207,6 +207,8 @@ FallbackResult CancellableFallback::run(const TopoDS_Face& forwardFace, bool rev
     }
     job_ = std::move(job);
   }
+  // Raised already: back at once, whether or not the job has finished (a later call takes it up).
+  if (cancel->load(std::memory_order_relaxed)) return FallbackResult::kCancelled;
   {
     std::unique_lock<std::mutex> lock(job_->mutex);
     while (!job_->done) {

@@ -136,6 +136,7 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
   TessellatorImpl::FaceState& s = t.faces[face];
   level = std::min(level, lastLevel());
   if (level > t.edgeLevel.load()) return s.report.status;  // contract: edges first
+  if (!s.isolation.empty()) return t.finishIsolation(face, level, cancel);  // its fallback was cancelled
   try {
     for (int k = s.level + 1; k <= level; ++k) {
       if (s.failed) {  // an isolated face keeps what it has on every further level
@@ -162,28 +163,38 @@ FaceStatus Tessellator::advanceFace(FaceId face, int level, const std::atomic<bo
       s.level = k;
     }
   } catch (const std::exception& e) {
-    t.isolateFailedFace(face, level, e.what());
+    return t.isolateFailedFace(face, level, e.what(), cancel);
   } catch (const Standard_Failure& e) {
-    t.isolateFailedFace(face, level, std::string("OpenCASCADE: ") + e.GetMessageString());
+    return t.isolateFailedFace(face, level, std::string("OpenCASCADE: ") + e.GetMessageString(), cancel);
   } catch (...) {
-    t.isolateFailedFace(face, level, "unknown exception");
+    return t.isolateFailedFace(face, level, "unknown exception", cancel);
   }
   if (s.level == lastLevel()) s.mesher.reset();
   return s.report.status;
 }
 
-void TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::string& what) {
+FaceStatus TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::string& what,
+                                              const std::atomic<bool>* cancel) {
   FaceState& s = faces[face];
   s.mesher.reset();
   s.failed = true;
-  std::string reason = "meshing failed (" + what + ")";
+  s.isolation = "meshing failed (" + what + ")";
+  return finishIsolation(face, level, cancel);
+}
+
+FaceStatus TessellatorImpl::finishIsolation(FaceId face, int level, const std::atomic<bool>* cancel) {
+  FaceState& s = faces[face];
+  level = std::max(level, s.level + 1);  // the level that failed, at least
   std::vector<std::uint32_t> indices;
   std::string failure;
   bool meshed = false;
   try {
     const TopoDS_Face forward = TopoDS::Face(model.impl().faceShapes[face].Oriented(TopAbs_FORWARD));
-    meshed = meshFaceWithBRepMesh(forward, model.faces()[face].reversed, chordal, angle, s.mesh, indices, failure) ==
-             FallbackResult::kMeshed;
+    if (!s.fallback) s.fallback = std::make_unique<CancellableFallback>();
+    const FallbackResult result =
+        s.fallback->run(forward, model.faces()[face].reversed, chordal, angle, s.mesh, indices, failure, cancel);
+    if (result == FallbackResult::kCancelled) return FaceStatus::kCancelled;  // s.isolation kept
+    meshed = result == FallbackResult::kMeshed;
   } catch (const std::exception& e) {
     failure = e.what();
   } catch (const Standard_Failure& e) {
@@ -191,6 +202,9 @@ void TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::strin
   } catch (...) {
     failure = "unknown exception";
   }
+  s.fallback.reset();
+  const std::string reason = std::move(s.isolation);
+  s.isolation.clear();
   s.report.status = meshed ? FaceStatus::kFallback : FaceStatus::kEmpty;
   s.report.reason = meshed ? reason + "; meshed by the fallback" : reason + "; fallback failed too: " + failure;
   if (!meshed) indices.clear();
@@ -203,6 +217,7 @@ void TessellatorImpl::isolateFailedFace(FaceId face, int level, const std::strin
     s.mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(s.mesh.vertexCount()));
   }
   s.level = level;
+  return s.report.status;
 }
 
 void Tessellator::failFaceForTesting(FaceId face) { impl_->faces[face].injectFailure = true; }

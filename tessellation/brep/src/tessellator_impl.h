@@ -3,9 +3,11 @@
 
 #include <atomic>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "brep/tessellator.h"
+#include "brepmesh_fallback.h"
 #include "edge_table.h"
 #include "face_mesher.h"
 #include "work_sharing.h"
@@ -24,6 +26,8 @@ class TessellatorImpl {
     int level = -1;
     bool failed = false;         // an exception escaped its mesher: isolated (see isolateFailedFace)
     bool injectFailure = false;  // failFaceForTesting()
+    std::string isolation;       // why it failed, while its fallback mesh is not made yet
+    std::unique_ptr<CancellableFallback> fallback;  // that mesh's BRepMesh, while cancelled
   };
 
   const Model& model;
@@ -46,7 +50,10 @@ class TessellatorImpl {
   // mesher knows how to report): its mesher is dropped, BRepMesh meshes it if it can (kFallback), else
   // it stays without triangles (kEmpty); either way with the reason, and levels up to `level` exist,
   // so the rest of the model goes on.
-  void isolateFailedFace(FaceId face, int level, const std::string& what);
+  FaceStatus isolateFailedFace(FaceId face, int level, const std::string& what, const std::atomic<bool>* cancel);
+  // The failed face's fallback mesh, on every level up to `level`; kCancelled (to be called again)
+  // when the flag stops BRepMesh.
+  FaceStatus finishIsolation(FaceId face, int level, const std::atomic<bool>* cancel);
 };
 
 // Plans the levels: tolerances halving from about 1% of the diagonal down to `chordal` (faster than
