@@ -550,7 +550,8 @@ void GpuScene::recordFaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kVertices].buffer.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, buffers_[kIndices].buffer.buffer, 0, VK_INDEX_TYPE_UINT32);
-  std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
+  // At least 1: the loops below step by the count drawn.
+  const std::uint32_t maxDraws = std::max(1u, device_.properties.limits.maxDrawIndirectCount);
   constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   VkPipeline bound = VK_NULL_HANDLE;
   for (const Scene::Instance& instance : scene_.instances_) {
@@ -656,7 +657,8 @@ void GpuScene::recordEdgeDraws(VkCommandBuffer cmd, VkPipelineLayout layout, con
   edgeDrawCalls_ = 0;
   VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffers_[kEdgePoints].buffer.buffer, &zero);
-  std::uint32_t maxDraws = device_.properties.limits.maxDrawIndirectCount;
+  // At least 1: the loops below step by the count drawn.
+  const std::uint32_t maxDraws = std::max(1u, device_.properties.limits.maxDrawIndirectCount);
   for (const Scene::Instance& instance : scene_.instances_) {
     if (!instance.visible) continue;
     const Scene::Part& part = scene_.parts_[instance.part];

@@ -89,7 +89,8 @@ TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
   // comes within 0.037 of the seam chord's midpoint; the measure read up to 0.0965 on the chord
   // (1.75x the level's tolerance).
   const double uv[6] = {2.22044604925e-16, -999.999, 0, -999.999125, 0.0416666666667, -999.9990625};
-  EXPECT_LT(measuredTriangle("seam_beside_tiny_spans.brep", uv), 0.055) << "0.0965 when no step could stay by the seam";
+  EXPECT_LT(measuredTriangle("seam_beside_tiny_spans.brep", uv), 0.055)
+      << "0.0965 when no step could stay by the seam";
 }
 
 TEST(SeamBesideTinySpans, EveryLevelMeasuresWithinItsTolerance) {
@@ -105,7 +106,8 @@ TEST(SeamBesideTinySpans, EveryLevelMeasuresWithinItsTolerance) {
 TEST(FacePastItsKnots, ATriangleOnTheExtrapolatedSurfaceMeasuresItsDistanceToIt) {
   const double uv[6] = {26.335810123503045, 849.70078483817008, 26.33725742236188, 849.71445272046481,
                         26.334362824644273, 849.68711695587581};
-  EXPECT_LT(measuredTriangle("ellipse_past_the_knots.brep", uv), 27.3) << "134.5 when every step stopped at the knots";
+  EXPECT_LT(measuredTriangle("ellipse_past_the_knots.brep", uv), 27.3)
+      << "134.5 when every step stopped at the knots";
 }
 
 TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
@@ -119,9 +121,10 @@ TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
 // all beyond other local minima of the distance: one read 2160 (3.06x), where the triangle lies on
 // the surface. The measure scans such triangles at as many points as a full grid has.
 TEST(ZeroAreaAlongASide, ATriangleOnTheSideMeasuresItsDistanceToTheSide) {
-  const double uv[6] = {0.99999999999999978, 0.36186550176886012, 0.99999999999999989, 0.19238185096072263,
-                        0.99999999999999978, 0.36222043867013715};
-  EXPECT_LT(measuredTriangle("zero_area_along_a_side.brep", uv), 0.2 * 706.269) << "2160 from 17 points along the side";
+  const double uv[6] = {0.99999999999999978, 0.36186550176886012, 0.99999999999999989,
+                        0.19238185096072263, 0.99999999999999978, 0.36222043867013715};
+  EXPECT_LT(measuredTriangle("zero_area_along_a_side.brep", uv), 0.2 * 706.269)
+      << "2160 from 17 points along the side";
 }
 
 }  // namespace

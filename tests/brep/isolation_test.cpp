@@ -135,24 +135,28 @@ TEST(Isolation, TheFallbackReturnsAtOnceWhenCancelledAndTakesUpItsJobAgain) {
   FaceMesh inline_;
   std::vector<std::uint32_t> inlineIndices;
   std::string failure;
-  ASSERT_EQ(meshFaceWithBRepMesh(face, false, 0.01, 0.3, inline_, inlineIndices, failure), FallbackResult::kMeshed)
+  ASSERT_EQ(meshFaceWithBRepMesh(face, false, 0.01, 0.3, inline_, inlineIndices, failure),
+            FallbackResult::kMeshed)
       << failure;
   std::atomic<bool> cancel{true};
   FaceMesh mesh;
   std::vector<std::uint32_t> indices;
   CancellableFallback fallback;
-  EXPECT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel), FallbackResult::kCancelled);
+  EXPECT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel),
+            FallbackResult::kCancelled);
   EXPECT_EQ(mesh.vertexCount(), 0u);
   EXPECT_TRUE(indices.empty());
   cancel = false;
-  ASSERT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel), FallbackResult::kMeshed) << failure;
+  ASSERT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel), FallbackResult::kMeshed)
+      << failure;
   EXPECT_EQ(indices, inlineIndices);
   EXPECT_EQ(mesh.positions, inline_.positions);
   EXPECT_EQ(mesh.normals, inline_.normals);
   // Abandoned while BRepMesh runs: destroyed without waiting (the thread ends on its own).
   CancellableFallback abandoned;
   cancel = true;
-  EXPECT_EQ(abandoned.run(face, false, 0.003, 0.2, mesh, indices, failure, &cancel), FallbackResult::kCancelled);
+  EXPECT_EQ(abandoned.run(face, false, 0.003, 0.2, mesh, indices, failure, &cancel),
+            FallbackResult::kCancelled);
 }
 
 // A run of level 0 cancelled while crossing_boundary.brep's face 1 makes its fallback mesh
@@ -185,7 +189,8 @@ TEST(Isolation, AFallbackCancelledAnywhereResumesToTheSameMesh) {
     ASSERT_TRUE(t->run(1, {}, &cancel));
     for (FaceId f = 0; f < model->faces().size(); ++f) {
       expectSameFace(*clean, *t, f);
-      EXPECT_EQ(t->report(f).reason, clean->report(f).reason) << "cancelled after " << ms << " ms, face " << f;
+      EXPECT_EQ(t->report(f).reason, clean->report(f).reason)
+          << "cancelled after " << ms << " ms, face " << f;
     }
   }
   EXPECT_GE(cancelled, 2) << "level 0 ran to its end before the flag";

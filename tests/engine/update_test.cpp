@@ -237,7 +237,8 @@ TEST_F(UpdateTest, IndirectDrawsOfPartsAfterTheFirstDrawOnlyTheirOwnFaces) {
     }
   }
   const ImageDiff d = compareImages(pictures[0], pictures[1], 24);
-  EXPECT_LE(d.differing, 20u) << d.differing << " pixels differ by more than 24 (largest " << d.maxDelta << ")";
+  EXPECT_LE(d.differing, 20u) << d.differing << " pixels differ by more than 24 (largest " << d.maxDelta
+                              << ")";
 }
 
 TEST_F(UpdateTest, AdjacentFacesOfOneColourAndAllEdgesAreDrawnInFewCalls) {

@@ -72,7 +72,9 @@ class StopIndicator : public Message_ProgressIndicator {
   const std::atomic<bool>& abandoned_;
 };
 
-std::string failureOf(const Standard_Failure& e) { return std::string("BRepMesh failed: ") + e.GetMessageString(); }
+std::string failureOf(const Standard_Failure& e) {
+  return std::string("BRepMesh failed: ") + e.GetMessageString();
+}
 
 // A copy: BRepMesh stores polygons on the edges it meshes, and the originals are shared with faces
 // other threads are meshing. The geometry is copied too, so the copy outlives the model.
@@ -142,8 +144,9 @@ FallbackResult appendTriangulation(const TopoDS_Face& face, bool reversed, FaceM
 
 }  // namespace
 
-FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
-                                    FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure) {
+FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal,
+                                    double angle, FaceMesh& mesh, std::vector<std::uint32_t>& indices,
+                                    std::string& failure) {
   try {
     const TopoDS_Face face = privateCopy(forwardFace);
     runBRepMesh(face, chordal, angle, Message_ProgressRange());
@@ -167,10 +170,11 @@ CancellableFallback::~CancellableFallback() {
   if (job_) job_->abandoned.store(true);
 }
 
-FallbackResult CancellableFallback::run(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
-                                        FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure,
-                                        const std::atomic<bool>* cancel) {
-  if (cancel == nullptr) return meshFaceWithBRepMesh(forwardFace, reversed, chordal, angle, mesh, indices, failure);
+FallbackResult CancellableFallback::run(const TopoDS_Face& forwardFace, bool reversed, double chordal,
+                                        double angle, FaceMesh& mesh, std::vector<std::uint32_t>& indices,
+                                        std::string& failure, const std::atomic<bool>* cancel) {
+  if (cancel == nullptr)
+    return meshFaceWithBRepMesh(forwardFace, reversed, chordal, angle, mesh, indices, failure);
   if (!job_) {
     auto job = std::make_shared<Job>();
     try {

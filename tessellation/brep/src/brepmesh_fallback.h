@@ -19,8 +19,9 @@ enum class FallbackResult { kMeshed, kFailed, kCancelled };
 
 // Appends the vertices to mesh and the triangles (oriented for `reversed`) to indices; kFailed,
 // with the reason, when BRepMesh produces nothing. Runs on the calling thread, to the end.
-FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
-                                    FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure);
+FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal,
+                                    double angle, FaceMesh& mesh, std::vector<std::uint32_t>& indices,
+                                    std::string& failure);
 
 // The same, cancellable at once. BRepMesh reads its progress indicator only between its phases,
 // and a face's first phase (the surface's grid of points) can run for seconds without a check, so
@@ -36,8 +37,9 @@ class CancellableFallback {
   CancellableFallback& operator=(const CancellableFallback&) = delete;
   ~CancellableFallback();
 
-  FallbackResult run(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle, FaceMesh& mesh,
-                     std::vector<std::uint32_t>& indices, std::string& failure, const std::atomic<bool>* cancel);
+  FallbackResult run(const TopoDS_Face& forwardFace, bool reversed, double chordal, double angle,
+                     FaceMesh& mesh, std::vector<std::uint32_t>& indices, std::string& failure,
+                     const std::atomic<bool>* cancel);
 
  private:
   struct Job;

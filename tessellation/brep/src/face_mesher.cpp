@@ -1409,8 +1409,9 @@ FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh,
   records_.clear();
   if (deferredIndices_.empty()) {
     std::string failure;
-    const FallbackResult result = fallbackJob_.run(topology_.face, settings_.reversed, settings_.finalChordal,
-                                                   settings_.finalAngle, mesh, deferredIndices_, failure, cancel);
+    const FallbackResult result =
+        fallbackJob_.run(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle,
+                         mesh, deferredIndices_, failure, cancel);
     if (result == FallbackResult::kCancelled) {
       pendingDefer_ = why;
       return FaceStatus::kCancelled;
@@ -1466,7 +1467,8 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     if (!ok) return useFallback(problem, mesh, report, cancel);
     if (!refinementStopped_ && !refine(k, level, mesh, cancel)) return FaceStatus::kCancelled;
   } catch (const Standard_Failure& e) {
-    return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report, cancel);
+    return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report,
+                       cancel);
   }
   std::vector<std::uint32_t> indices = snapshot(mesh);
   if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report, cancel);

@@ -98,7 +98,7 @@ class FaceMesher {
   // runs, it returns kCancelled and the next advance() goes straight back to it (pendingFallback_).
   FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report,
                          const std::atomic<bool>* cancel);
-  std::string pendingFallback_;       // why, when a fallback was cancelled
+  std::string pendingFallback_;      // why, when a fallback was cancelled
   CancellableFallback fallbackJob_;  // BRepMesh for useFallback() and deferLevel()
   // A face with nothing to show (its surface has no area): every level is empty (kEmpty).
   FaceStatus leaveEmpty(const std::string& why, FaceMesh& mesh, FaceReport& report);

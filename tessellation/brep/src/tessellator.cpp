@@ -191,8 +191,8 @@ FaceStatus TessellatorImpl::finishIsolation(FaceId face, int level, const std::a
   try {
     const TopoDS_Face forward = TopoDS::Face(model.impl().faceShapes[face].Oriented(TopAbs_FORWARD));
     if (!s.fallback) s.fallback = std::make_unique<CancellableFallback>();
-    const FallbackResult result =
-        s.fallback->run(forward, model.faces()[face].reversed, chordal, angle, s.mesh, indices, failure, cancel);
+    const FallbackResult result = s.fallback->run(forward, model.faces()[face].reversed, chordal, angle,
+                                                  s.mesh, indices, failure, cancel);
     if (result == FallbackResult::kCancelled) return FaceStatus::kCancelled;  // s.isolation kept
     meshed = result == FallbackResult::kMeshed;
   } catch (const std::exception& e) {

@@ -50,7 +50,8 @@ class TessellatorImpl {
   // mesher knows how to report): its mesher is dropped, BRepMesh meshes it if it can (kFallback), else
   // it stays without triangles (kEmpty); either way with the reason, and levels up to `level` exist,
   // so the rest of the model goes on.
-  FaceStatus isolateFailedFace(FaceId face, int level, const std::string& what, const std::atomic<bool>* cancel);
+  FaceStatus isolateFailedFace(FaceId face, int level, const std::string& what,
+                               const std::atomic<bool>* cancel);
   // The failed face's fallback mesh, on every level up to `level`; kCancelled (to be called again)
   // when the flag stops BRepMesh.
   FaceStatus finishIsolation(FaceId face, int level, const std::atomic<bool>* cancel);

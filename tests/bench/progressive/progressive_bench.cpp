@@ -202,10 +202,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::printf("device: %s, %u tessellation thread(s), 1280x720%s\n", device->name.c_str(), threads,
-              draws == Draws::kDirect ? ", draws one by one" : draws == Draws::kIndirect ? ", indirect draws" : "");
-  std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %8s %6s %9s %11s  %s\n", "model", "faces", "brepmesh ms",
-              "1st frame", "ratio", "final ms", "max frame ms", "idle ms", "idle cpu", "draws", "MB/frame",
-              "max MB/frm", "ms per level");
+              draws == Draws::kDirect     ? ", draws one by one"
+              : draws == Draws::kIndirect ? ", indirect draws"
+                                          : "");
+  std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %8s %6s %9s %11s  %s\n", "model", "faces",
+              "brepmesh ms", "1st frame", "ratio", "final ms", "max frame ms", "idle ms", "idle cpu", "draws",
+              "MB/frame", "max MB/frm", "ms per level");
   double brepmeshMs = 0;  // of the model's first run, shown again on its repeats
   for (int run = 0; run < repeat * static_cast<int>(models.size()); ++run) {
     const std::string& m = models[static_cast<std::size_t>(run / repeat)];
@@ -218,10 +220,10 @@ int main(int argc, char** argv) {
     }
     std::string levels;
     for (double t : row.levelMs) levels += (levels.empty() ? "" : " ") + std::to_string(static_cast<int>(t));
-    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %11.1f %12.1f %10.1f %8.1f %6u %9.2f %11.2f  %s\n", name.c_str(),
-                row.faces, row.brepmesh, row.firstFrame, row.firstFrame / row.brepmesh, row.lastLevel,
-                row.longestLoading, row.idle, row.idleCpu, row.drawCalls, row.meanBytes / 1e6, row.maxBytes / 1e6,
-                levels.c_str());
+    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %11.1f %12.1f %10.1f %8.1f %6u %9.2f %11.2f  %s\n",
+                name.c_str(), row.faces, row.brepmesh, row.firstFrame, row.firstFrame / row.brepmesh,
+                row.lastLevel, row.longestLoading, row.idle, row.idleCpu, row.drawCalls, row.meanBytes / 1e6,
+                row.maxBytes / 1e6, levels.c_str());
     std::fflush(stdout);
   }
   engine::destroyDevice(*device);
