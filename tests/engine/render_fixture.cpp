@@ -27,6 +27,11 @@ void pinVulkanLibrariesForLeakReports() {
 
 }  // namespace
 
+const char* testDeviceName() {
+  const char* name = std::getenv("CETVIEW_TEST_DEVICE");
+  return name != nullptr && *name != '\0' ? name : "llvmpipe";
+}
+
 void VulkanTest::SetUp() {
   pinVulkanLibrariesForLeakReports();
   engine::InstanceOptions options;
@@ -41,7 +46,7 @@ void VulkanTest::SetUp() {
   if (HasFatalFailure() || IsSkipped()) return;
   engine::DeviceOptions deviceOptions;
   deviceOptions.presentSurface = surface_;
-  if (const char* name = std::getenv("CETVIEW_TEST_DEVICE")) deviceOptions.name = name;
+  deviceOptions.name = testDeviceName();
   auto device = engine::createDevice(instance_, deviceOptions);
   ASSERT_TRUE(device.ok()) << device.error().message;
   device_ = *device;

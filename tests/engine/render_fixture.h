@@ -15,6 +15,10 @@
 
 namespace cetview::test {
 
+// The device the render tests run on: CETVIEW_TEST_DEVICE (a name substring, as --device), else
+// lavapipe, whose pictures the goldens are (a GPU draws lines and MSAA edges a little differently).
+const char* testDeviceName();
+
 class VulkanTest : public ::testing::Test {
  protected:
   void SetUp() override;

@@ -494,7 +494,7 @@ TEST_F(UpdateTest, RenderMeshToPngWritesTheSameImage) {
   options.width = kSize;
   options.height = kSize;
   options.validation = true;
-  if (const char* name = std::getenv("CETVIEW_TEST_DEVICE")) options.deviceName = name;
+  options.deviceName = testDeviceName();
   std::string path = std::string(CETVIEW_TEST_OUTPUT_DIR) + "/render_mesh_to_png.png";
   Status written = renderMeshToPng(cube(), options, path);
   ASSERT_TRUE(written.ok()) << written.error().message;
