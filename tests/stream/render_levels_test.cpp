@@ -43,8 +43,8 @@ TEST(RenderLevels, DemoSharpensLevelByLevelAndMatchesGolden) {
   // The golden is lavapipe's: on lavapipe unless CETVIEW_TEST_DEVICE names another device.
   const char* device = std::getenv("CETVIEW_TEST_DEVICE");
   const std::string deviceName = device != nullptr && *device != '\0' ? device : "llvmpipe";
-  const CliResult r = run("render demo -o " + out + " --levels --size 320x240 --threads 2 --validate --device '" +
-                          deviceName + "'");
+  const CliResult r = run("render demo -o " + out +
+                          " --levels --size 320x240 --threads 2 --validate --device '" + deviceName + "'");
   ASSERT_EQ(r.exitCode, 0) << r.out;
   const std::vector<LevelLine> levels = parseLines(r.out);
   ASSERT_GE(levels.size(), 3u) << r.out;
