@@ -170,6 +170,8 @@ TEST(Isolation, AFallbackCancelledAnywhereResumesToTheSameMesh) {
   const MeshParams params = test::relative(0.00011235273724638671, 10.625467307545586);
   auto clean = test::tessellate(*model, params);
   ASSERT_TRUE(clean);
+  auto cleanLevel0 = Tessellator::create(*model, params).tessellator;  // its reports after level 0
+  ASSERT_TRUE(cleanLevel0 && cleanLevel0->run(1, {}, nullptr, 0));
   int cancelled = 0;
   for (const double ms : {5.0, 30.0, 60.0}) {
     auto t = Tessellator::create(*model, params).tessellator;
@@ -186,6 +188,8 @@ TEST(Isolation, AFallbackCancelledAnywhereResumesToTheSameMesh) {
       ++cancelled;
       EXPECT_TRUE(t->faceMesh(1).levels.empty()) << "cancelled after " << ms << " ms";
     }
+    ASSERT_TRUE(t->run(1, {}, &cancel, 0));
+    EXPECT_EQ(t->report(1).reason, cleanLevel0->report(1).reason) << "cancelled after " << ms << " ms";
     ASSERT_TRUE(t->run(1, {}, &cancel));
     for (FaceId f = 0; f < model->faces().size(); ++f) {
       expectSameFace(*clean, *t, f);

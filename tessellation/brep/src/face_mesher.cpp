@@ -1371,7 +1371,7 @@ FaceStatus FaceMesher::leaveEmpty(const std::string& why, FaceMesh& mesh, FaceRe
   return fallbackStatus_;
 }
 
-FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report,
+FaceStatus FaceMesher::useFallback(std::string why, FaceMesh& mesh, FaceReport& report,
                                    const std::atomic<bool>* cancel) {
   cdt_.reset();
   records_.clear();
@@ -1403,7 +1403,7 @@ FaceStatus FaceMesher::useFallback(const std::string& why, FaceMesh& mesh, FaceR
 
 // A coarse level whose boundary polygon crosses itself in UV (coarse chords of close loops can cross
 // where finer ones do not): that level shows the fallback mesh, and the next level starts afresh.
-FaceStatus FaceMesher::deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report,
+FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceReport& report,
                                   const std::atomic<bool>* cancel) {
   cdt_.reset();
   records_.clear();

@@ -96,14 +96,14 @@ class FaceMesher {
   std::vector<std::uint32_t> snapshot(const FaceMesh& mesh) const;
   // The face is meshed by BRepMesh (brepmesh_fallback.h) from now on. Cancelled while BRepMesh
   // runs, it returns kCancelled and the next advance() goes straight back to it (pendingFallback_).
-  FaceStatus useFallback(const std::string& why, FaceMesh& mesh, FaceReport& report,
+  FaceStatus useFallback(std::string why, FaceMesh& mesh, FaceReport& report,
                          const std::atomic<bool>* cancel);
   std::string pendingFallback_;      // why, when a fallback was cancelled
   CancellableFallback fallbackJob_;  // BRepMesh for useFallback() and deferLevel()
   // A face with nothing to show (its surface has no area): every level is empty (kEmpty).
   FaceStatus leaveEmpty(const std::string& why, FaceMesh& mesh, FaceReport& report);
   bool areaChecked_ = false;  // SurfaceEval::collapsed() asked (on the first level)
-  FaceStatus deferLevel(int k, const std::string& why, FaceMesh& mesh, FaceReport& report,
+  FaceStatus deferLevel(int k, std::string why, FaceMesh& mesh, FaceReport& report,
                         const std::atomic<bool>* cancel);
   std::vector<std::uint32_t> deferredIndices_;  // the fallback mesh shown by deferred coarse levels
   std::string pendingDefer_;                    // why, when making deferredIndices_ was cancelled
