@@ -6,7 +6,6 @@
 #include <system_error>
 #include <thread>
 
-#include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
@@ -14,7 +13,6 @@
 #include <Message_ProgressIndicator.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Standard_Failure.hxx>
-#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include "surface_eval.h"
