@@ -25,6 +25,7 @@ LiveTessellation::CreateResult LiveTessellation::create(std::unique_ptr<brep::Mo
   live->finestAbsolute_ = std::min(options.finestRelative * live->diagonal_, live->requested_);
   live->angleDeg_ = options.angleDeg;
   live->threads_ = std::max(1u, options.threads);
+  live->wake_ = options.wake;
   out.error = live->start();
   if (out.error.empty()) out.live = std::move(live);
   return out;
@@ -62,6 +63,7 @@ std::string LiveTessellation::start() {
   problemsReady_ = false;
   stream::StreamOptions streamOptions;
   streamOptions.threads = threads_;
+  streamOptions.onLevelPublished = wake_;
   started_ = std::chrono::steady_clock::now();
   producer_ = std::make_unique<stream::ProgressiveStream>(*tess_, 0, streamOptions);
   consumer_ = std::make_unique<stream::StreamConsumer>(*producer_, model_->faces().size());
@@ -93,8 +95,8 @@ std::string LiveTessellation::setAngle(double degrees) {
   return start();
 }
 
-void LiveTessellation::poll(std::size_t byteBudget) {
-  consumer_->poll(byteBudget, *link_);
+std::size_t LiveTessellation::poll(std::size_t byteBudget) {
+  return consumer_->poll(byteBudget, *link_);
 }
 
 const std::vector<FaceProblem>* LiveTessellation::faceProblems() {

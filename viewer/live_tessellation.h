@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct LiveOptions {
   double chordalAbsolute = 0;    // initial deflection (model units); 0: 0.1% of the diagonal
   double angleDeg = 20.0;
   unsigned threads = 1;
+  // Called from a tessellation thread when a level is complete (the window posts an empty event
+  // so its loop, asleep between frames, shows the level at once).
+  std::function<void()> wake;
 };
 
 class LiveTessellation {
@@ -47,7 +51,7 @@ class LiveTessellation {
   // error line, empty on success.
   std::string setAngle(double degrees);
   // Applies up to `byteBudget` bytes of finished face levels to the Scene (never waits).
-  void poll(std::size_t byteBudget);
+  std::size_t poll(std::size_t byteBudget);  // returns the bytes read
 
   // Deviation heat map (DESIGN.md's promise made visible): each shown triangle is measured
   // against the exact surface (brep::measureTriangles) and coloured by deviation / tolerance of the
@@ -105,6 +109,7 @@ class LiveTessellation {
   std::chrono::steady_clock::time_point started_;
   double diagonal_ = 1, finestAbsolute_ = 0, requested_ = 0, angleDeg_ = 20;
   unsigned threads_ = 1;
+  std::function<void()> wake_;
   int target_ = 0;
   std::vector<bool> visible_;                      // per model instance
   std::vector<engine::PartRange> heatParts_;       // per model part: one face per (face, bin) in use

@@ -154,7 +154,7 @@ int runRender(const RenderCli& cli) {
                "level " + std::to_string(std::max(0, p.levelInProgress)) + "/" + std::to_string(last));
     if (consumer.completeLevel() < next) {
       if (std::chrono::steady_clock::now() > deadline) return fail(1, "tessellation did not finish in 2 hours");
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      producer.waitForLevel(next, std::chrono::milliseconds(1));  // the progress bar moves meanwhile
       continue;
     }
     simulateDeviceLossIfRequested(r, pictures++);

@@ -27,6 +27,7 @@
 #include "engine/camera.h"
 #include "engine/image.h"
 #include "engine/renderer.h"
+#include "frame_pacing.h"
 #include "live_tessellation.h"
 #include "view_script.h"
 #include "window_glue.h"
@@ -200,7 +201,8 @@ class Viewer {
   bool frameNeeded();
   std::uint64_t seenEvents_ = ~std::uint64_t{0};
   int settleFrames_ = 0;  // frames still drawn after the last window event (ImGui settles over a few)
-  int drawnLevel_ = -2;   // the complete level when the last frame was drawn
+  FramePacing pacing_;    // frames for tessellation data: completed levels at once, others paced
+  bool polledSinceFrame_ = false;  // records arrived since the last frame
   std::chrono::steady_clock::time_point lastDrawn_{};
 };
 
@@ -230,6 +232,7 @@ std::string Viewer::openModel(const std::string& path) {
   options.chordalAbsolute = absolute;
   options.angleDeg = angleSlider_;
   options.threads = cli_.threads;
+  options.wake = [] { glfwPostEmptyEvent(); };
   auto created = LiveTessellation::create(std::move(loaded.model), r_.scene(), options);
   if (!created.live) return created.error;
   live_ = std::move(created.live);
@@ -244,6 +247,7 @@ std::string Viewer::openModel(const std::string& path) {
   camera_.viewStandard(initialView_, aspect, 0.0f);
   openCamera_ = camera_.camera();
   refitPending_ = true;
+  pacing_.reset(std::chrono::steady_clock::now());
   glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
   std::printf("opened: %s (%zu faces, %d levels down to %.6g)\n", live_->model().source().c_str(),
               live_->model().faces().size(), live_->lastLevel() + 1, live_->finestAbsolute());
@@ -659,11 +663,9 @@ bool Viewer::frameNeeded() {
     --settleFrames_;
     return true;
   }
-  const int complete = live_->consumer().completeLevel();
-  if (complete != drawnLevel_) {
-    drawnLevel_ = complete;
+  if (pacing_.due(now, live_->consumer().completeLevel(), polledSinceFrame_ || r_.scene().uploadsPending(),
+                  r_.scene().uploadsPending()))
     return true;
-  }
   const bool scriptBusy = waitFrames_ > 0 || waitLevel_ != -2 || (waitingSeconds_ && now >= waitUntil_) ||
                           (!waitingSeconds_ && scriptNext_ < script_.size());
   // While the model loads, the progress panel's clock moves even when no face has finished.
@@ -671,9 +673,8 @@ bool Viewer::frameNeeded() {
   // The heat map is measured on a drawn frame once the workers are done (updateHeatMap), which
   // may be after the frame that showed the level complete.
   const bool heatMapDue = heatMap_ && heatLevel_ != live_->targetLevel() && live_->idle();
-  return frame_ < kSettleFrames || r_.scene().uploadsPending() || camera_.animating() || scriptBusy ||
-         cli_.frames > 0 || !pendingScreenshot_.empty() || !pendingOpen_.empty() || quit_ || progressTick ||
-         heatMapDue;
+  return frame_ < kSettleFrames || camera_.animating() || scriptBusy || cli_.frames > 0 ||
+         !pendingScreenshot_.empty() || !pendingOpen_.empty() || quit_ || progressTick || heatMapDue;
 }
 
 bool Viewer::stepScript() {
@@ -843,7 +844,7 @@ int Viewer::run() {
         status_.clear();
       }
     }
-    live_->poll(kPollBytesPerFrame);
+    if (live_->poll(kPollBytesPerFrame) > 0) polledSinceFrame_ = true;
     reportFaceProblems();
     if (!frameNeeded()) {
       slept = true;
@@ -922,6 +923,8 @@ int Viewer::run() {
       auto status = r_.drawFrame(camera_.camera(), style);
       if (!status) return fail(1, engineErrorLine(status.error()));
     }
+    pacing_.drawn(now, live_->consumer().completeLevel(), r_.scene().uploadsPending());
+    polledSinceFrame_ = false;
     ++frame_;
     if (lastFrame) break;
   }

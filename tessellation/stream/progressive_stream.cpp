@@ -54,6 +54,11 @@ StreamProgress ProgressiveStream::progress() const {
 
 bool ProgressiveStream::idle() const { return inProgress_.load() < 0 && complete_.load() >= target_.load(); }
 
+void ProgressiveStream::waitForLevel(int level, std::chrono::microseconds timeout) const {
+  std::unique_lock<std::mutex> lock(mutex_);
+  publishedChanged_.wait_for(lock, timeout, [&] { return published_ >= level || stop_.load(); });
+}
+
 bool ProgressiveStream::waitForSpace() {
   if (cancel_.load(std::memory_order_relaxed)) return false;
   std::this_thread::sleep_for(std::chrono::microseconds(200));
@@ -86,10 +91,18 @@ void ProgressiveStream::coordinate() {
       h.chordal = tess_.schedule()[static_cast<std::size_t>(level)].chordal;
       h.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
       RecordWriter writer(*control_);
-      writer.write(&h, sizeof h, kLevelDone, [this] {
+      const bool written = writer.write(&h, sizeof h, kLevelDone, [this] {
         std::this_thread::yield();
         return !stop_.load();
       });
+      if (written) {
+        if (options_.onLevelPublished) options_.onLevelPublished();
+        {
+          std::lock_guard<std::mutex> lock(mutex_);
+          published_ = std::max(published_, level);
+        }
+        publishedChanged_.notify_all();
+      }
     }
   }
 }

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -27,6 +28,10 @@ namespace cetview::stream {
 struct StreamOptions {
   unsigned threads = 1;
   std::size_t ringBytes = std::size_t{4} << 20;  // per worker; larger records are fragmented
+  // Called on the coordinator thread once a level's completion record is in the control ring:
+  // wakes a consumer that sleeps in an event loop (the window posts an empty event). Must be quick
+  // and safe from any thread.
+  std::function<void()> onLevelPublished;
 };
 
 // A snapshot of progress, for panels and the terminal.
@@ -54,6 +59,9 @@ class ProgressiveStream {
   StreamProgress progress() const;
   // True once every face reached the target level and the coordinator waits.
   bool idle() const;
+  // Sleeps until the completion record of `level` (or a finer one) is in the control ring, or for
+  // `timeout` at most: a headless consumer's loop wakes as soon as a level can be shown.
+  void waitForLevel(int level, std::chrono::microseconds timeout) const;
 
   // Consumer side: the worker rings and the control ring (read from one consumer thread only).
   std::size_t workerRingCount() const { return rings_.size(); }
@@ -82,8 +90,10 @@ class ProgressiveStream {
   std::atomic<std::uint32_t> facesDone_{0};
   std::atomic<bool> cancel_{false};  // abandon the level in progress
   std::atomic<bool> stop_{false};    // shut down
+  int published_ = -1;               // the last level whose completion record is written (guarded by mutex_)
   mutable std::mutex mutex_;
   std::condition_variable wake_;
+  mutable std::condition_variable publishedChanged_;
   std::thread coordinator_;
 };
 

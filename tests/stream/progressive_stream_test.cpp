@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <random>
@@ -15,6 +16,13 @@
 
 namespace cetview::stream {
 namespace {
+
+StreamOptions options(unsigned threads, std::size_t ringBytes) {
+  StreamOptions o;
+  o.threads = threads;
+  o.ringBytes = ringBytes;
+  return o;
+}
 
 // A MeshSink that keeps what a renderer would: one vertex array, one index array per face.
 struct RecordingSink : MeshSink {
@@ -74,7 +82,7 @@ TEST(ProgressiveStream, LevelsCompleteInOrderAndMirrorTheTessellator) {
   Demo demo;
   const int last = demo.tess->lastLevel();
   ASSERT_GE(last, 1) << "the demo must have more than one level";
-  ProgressiveStream stream(*demo.tess, last, StreamOptions{2, 1 << 16});  // small rings: back-pressure
+  ProgressiveStream stream(*demo.tess, last, options(2, 1 << 16));  // small rings: back-pressure
   StreamConsumer consumer(stream, demo.model->faces().size());
   RecordingSink sink;
   ASSERT_TRUE(pollUntil(consumer, sink, last));
@@ -116,20 +124,43 @@ TEST(ProgressiveStream, LevelsCompleteInOrderAndMirrorTheTessellator) {
   EXPECT_EQ(consumer.shownTriangles(), stats[0].triangles);
 }
 
+// A consumer that sleeps between frames is woken when a level can be shown: waitForLevel()
+// returns once the level's record is in the control ring (a level's poll right after it shows the
+// level complete), and onLevelPublished is called once per level. The wait is an hour long: without
+// the wake-up the test runs into ctest's time limit.
+TEST(ProgressiveStream, EachCompletedLevelWakesTheConsumer) {
+  Demo demo;
+  const int last = demo.tess->lastLevel();
+  std::atomic<int> announced{0};
+  StreamOptions o = options(2, 1 << 20);
+  o.onLevelPublished = [&] { ++announced; };
+  ProgressiveStream stream(*demo.tess, last, o);
+  StreamConsumer consumer(stream, demo.model->faces().size());
+  RecordingSink sink;
+  for (int level = 0; level <= last; ++level) {
+    stream.waitForLevel(level, std::chrono::hours(1));
+    while (consumer.poll(1 << 20, sink) > 0) {
+    }
+    ASSERT_GE(consumer.completeLevel(), level);
+    EXPECT_GE(announced.load(), level + 1);
+  }
+  EXPECT_EQ(announced.load(), last + 1);
+}
+
 TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) {
   std::vector<std::vector<float>> clean;
   int last = 0;
   {
     Demo demo;
     last = demo.tess->lastLevel();
-    ProgressiveStream stream(*demo.tess, last, StreamOptions{2, 1 << 20});
+    ProgressiveStream stream(*demo.tess, last, options(2, 1 << 20));
     StreamConsumer consumer(stream, demo.model->faces().size());
     RecordingSink sink;
     ASSERT_TRUE(pollUntil(consumer, sink, last));
     for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) clean.push_back(sink.trianglePositions(f));
   }
   Demo demo;
-  ProgressiveStream stream(*demo.tess, 0, StreamOptions{2, 1 << 14});
+  ProgressiveStream stream(*demo.tess, 0, options(2, 1 << 14));
   StreamConsumer consumer(stream, demo.model->faces().size());
   RecordingSink sink;
   std::mt19937 rng(2026);
@@ -153,7 +184,7 @@ TEST(ProgressiveStream, DestroyingMidLevelCancelsTheRest) {
   // stream must end that wait and abandon the model, not finish it first (a hang would time out).
   Demo demo;
   {
-    ProgressiveStream stream(*demo.tess, demo.tess->lastLevel(), StreamOptions{2, 1 << 12});
+    ProgressiveStream stream(*demo.tess, demo.tess->lastLevel(), options(2, 1 << 12));
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   std::size_t unfinished = 0;

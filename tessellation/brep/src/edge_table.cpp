@@ -28,7 +28,6 @@
 #include "curve_poles.h"
 #include "facet_rules.h"
 #include "model_impl.h"
-#include "parallel.h"
 #include "surface_eval.h"
 
 namespace cetview::brep {
@@ -242,10 +241,10 @@ void EdgeTable::scalesSet() {
     for (std::uint32_t k = 0; k < info_[e].faces.size(); ++k) faceUses_[info_[e].faces[k].id].push_back({e, k});
 }
 
-bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>* cancel) {
+bool EdgeTable::discretise(int level, WorkerPool& pool, unsigned threads, const std::atomic<bool>* cancel) {
   const Level& tolerance = tolerances_[static_cast<std::size_t>(level)];
   std::atomic<bool> cancelled{false};
-  parallelFor(info_.size(), threads, [&](std::size_t e, unsigned) {
+  parallelFor(pool, info_.size(), threads, [&](std::size_t e) {
     if (cancelled.load(std::memory_order_relaxed)) return;
     if (cancel && cancel->load(std::memory_order_relaxed)) {
       cancelled = true;
@@ -254,7 +253,7 @@ bool EdgeTable::discretise(int level, unsigned threads, const std::atomic<bool>*
     if (!discretiseEdge(static_cast<EdgeId>(e), level, tolerance, cancel)) cancelled = true;
   });
   if (cancelled) return false;
-  separateCrossings(level, threads);
+  separateCrossings(level, pool, threads);
   return true;
 }
 
@@ -315,11 +314,12 @@ double EdgeTable::pcurveParameter(const Info& info, const FaceUse& use, double t
 // face's parameter plane where the curves do not: the face could not be meshed from that level's
 // boundary. Both crossing segments are halved, for every face that uses their edges, until no face's
 // segments cross (or a few rounds have passed: pcurves that really cross are the mesher's to report).
-void EdgeTable::separateCrossings(int level, unsigned threads) {
+void EdgeTable::separateCrossings(int level, WorkerPool& pool, unsigned threads) {
   constexpr int kRounds = 8;
   for (int round = 0; round < kRounds; ++round) {
     std::vector<std::vector<SegmentId>> found(faceUses_.size());
-    parallelFor(faceUses_.size(), threads, [&](std::size_t f, unsigned) { findCrossings(static_cast<FaceId>(f), level, found[f]); });
+    parallelFor(pool, faceUses_.size(), threads,
+                [&](std::size_t f) { findCrossings(static_cast<FaceId>(f), level, found[f]); });
     std::vector<SegmentId> split;
     for (const auto& list : found) split.insert(split.end(), list.begin(), list.end());
     if (split.empty()) return;
@@ -330,7 +330,7 @@ void EdgeTable::separateCrossings(int level, unsigned threads) {
     for (std::size_t i = 0; i < split.size(); ++i)
       if (i == 0 || split[i].edge != split[i - 1].edge) starts.push_back(i);
     starts.push_back(split.size());
-    parallelFor(starts.size() - 1, threads, [&](std::size_t g, unsigned) {
+    parallelFor(pool, starts.size() - 1, threads, [&](std::size_t g) {
       const EdgeId e = split[starts[g]].edge;
       EdgePoints& points = levels_[e][static_cast<std::size_t>(level)];
       try {

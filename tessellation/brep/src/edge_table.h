@@ -16,6 +16,7 @@
 
 #include "brep/tessellator.h"
 #include "bspline_direct.h"
+#include "worker_pool.h"
 
 namespace cetview::brep {
 
@@ -50,7 +51,7 @@ class EdgeTable {
   void scalesSet();
 
   // Discretises every non-degenerate edge for level k (after level k-1). Returns false if cancelled.
-  bool discretise(int level, unsigned threads, const std::atomic<bool>* cancel);
+  bool discretise(int level, WorkerPool& pool, unsigned threads, const std::atomic<bool>* cancel);
 
   bool degenerated(EdgeId e) const { return info_[e].degenerated; }
   // The points of edge e at level k (discretise(k) has returned). Degenerate edges have none.
@@ -101,7 +102,7 @@ class EdgeTable {
     bool operator<(const SegmentId& o) const { return edge != o.edge ? edge < o.edge : segment < o.segment; }
     bool operator==(const SegmentId& o) const { return edge == o.edge && segment == o.segment; }
   };
-  void separateCrossings(int level, unsigned threads);
+  void separateCrossings(int level, WorkerPool& pool, unsigned threads);
   void findCrossings(FaceId face, int level, std::vector<SegmentId>& out) const;
 
   const ModelImpl& model_;

@@ -12,7 +12,6 @@
 #include "brepmesh_fallback.h"
 
 #include "model_impl.h"
-#include "parallel.h"
 #include "tessellator_impl.h"
 
 namespace cetview::brep {
@@ -95,14 +94,14 @@ bool Tessellator::discretiseEdges(int level, unsigned threads, const std::atomic
   if (level != impl_->edgeLevel.load() + 1 || level > lastLevel()) return level <= impl_->edgeLevel.load();
   // The edge table holds each level's edge tolerance (edgeTolerances(): the faces' margin applied).
   if (!impl_->surfacesReady && !impl_->prepareSurfaces(threads, cancel)) return false;
-  if (!impl_->edges.discretise(level, threads, cancel)) return false;
+  if (!impl_->edges.discretise(level, impl_->pool, threads, cancel)) return false;
   impl_->edgeLevel.store(level);
   return true;
 }
 
 bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>* cancel) {
   std::atomic<bool> cancelled{false};
-  parallelFor(faces.size(), threads, [&](std::size_t f, unsigned) {
+  parallelFor(pool, faces.size(), threads, [&](std::size_t f) {
     if (cancelled.load(std::memory_order_relaxed) || faces[f].eval) return;
     if (cancel && cancel->load(std::memory_order_relaxed)) {
       cancelled = true;

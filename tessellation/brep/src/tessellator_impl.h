@@ -39,7 +39,8 @@ class TessellatorImpl {
   std::atomic<int> edgeLevel{-1};
   std::vector<FaceState> faces;
   bool surfacesReady = false;  // prepareSurfaces() has completed
-  WorkSharing sharing;         // runWorkers()' idle workers, lent to the faces' refinement passes
+  WorkerPool pool;             // threads for every parallel section (runWorkers(), the edges, the surfaces)
+  WorkSharing sharing{pool};   // runWorkers()' idle workers, lent to the faces' refinement passes
 
   // Every face's SurfaceEval, with `threads` threads, and the edges' face scales from them: the
   // first level's edges need the scales, its faces the evaluators. Returns false when cancelled

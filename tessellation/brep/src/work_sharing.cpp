@@ -1,7 +1,6 @@
 #include "work_sharing.h"
 
 #include <algorithm>
-#include <thread>
 
 namespace cetview::brep {
 
@@ -9,15 +8,20 @@ void WorkSharing::run(unsigned threads, const std::function<void(unsigned)>& wor
   threads = std::max(1u, threads);
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    running_ = threads;
+    running_ = 1;  // the caller, worker 0, counts from the start: helpers may run before it
     idle_ = 0;
   }
-  auto body = [&](unsigned worker) {
-    std::exception_ptr error;
+  std::vector<std::exception_ptr> errors(threads);
+  pool_.run(threads, [&](unsigned worker) {
+    if (worker != 0) {
+      // A helper counts from its start: one that joins late finds no work, returns, and helps.
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++running_;
+    }
     try {
       work(worker);
     } catch (...) {
-      error = std::current_exception();
+      errors[worker] = std::current_exception();
     }
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -25,14 +29,7 @@ void WorkSharing::run(unsigned threads, const std::function<void(unsigned)>& wor
     }
     changed_.notify_all();
     help();
-    return error;
-  };
-  std::vector<std::exception_ptr> errors(threads);
-  std::vector<std::thread> pool;
-  pool.reserve(threads - 1);
-  for (unsigned w = 1; w < threads; ++w) pool.emplace_back([&, w] { errors[w] = body(w); });
-  errors[0] = body(0);
-  for (auto& t : pool) t.join();
+  });
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
 }

@@ -13,13 +13,18 @@
 #include <mutex>
 #include <vector>
 
+#include "worker_pool.h"
+
 namespace cetview::brep {
 
 class WorkSharing {
  public:
-  // Runs work(worker) for every worker in [0, threads) on that many threads (worker 0 on the
-  // calling thread) and returns when all have returned. A worker whose call has returned helps
-  // with the sections opened by the others until every call has returned. Not reentrant.
+  explicit WorkSharing(WorkerPool& pool) : pool_(pool) {}
+
+  // Runs work(0) on the calling thread and work(1), ... work(threads - 1) on the pool's threads
+  // that wake while the calls run (WorkerPool::run: work shares its items out itself), and
+  // returns when all have returned. A worker whose call has returned helps with the sections
+  // opened by the others until every call has returned. Not reentrant.
   void run(unsigned threads, const std::function<void(unsigned)>& work);
 
   // fn(begin, end) over [0, count) in chunks of at most `grain`, each exactly once, possibly on
@@ -42,6 +47,7 @@ class WorkSharing {
   static std::size_t drain(Section& s);  // chunks run
   void help();
 
+  WorkerPool& pool_;
   std::mutex mutex_;
   std::condition_variable changed_;
   std::vector<Section*> open_;  // sections with chunks possibly left

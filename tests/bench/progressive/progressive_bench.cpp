@@ -23,6 +23,7 @@
 #include "engine/context.h"
 #include "engine/renderer.h"
 #include "engine/warm_up.h"
+#include "frame_pacing.h"
 #include "model_scene.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
@@ -111,17 +112,19 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   std::size_t frames = 0;
   double bytes = 0;
   int seen = -1;
-  int drawnLevel = -2;  // the complete level at the last frame
+  cetview::FramePacing pacing;
+  pacing.reset(start);
   for (;;) {
     const auto frameStart = Clock::now();
     const std::size_t polled = consumer.poll(std::size_t{64} << 20, link);
-    // As the window does (redraw on change): a frame only when there is something new to show;
-    // otherwise the cores are left to the workers for a moment.
-    if (frames > 0 && polled == 0 && consumer.completeLevel() == drawnLevel && !r.scene().uploadsPending()) {
-      std::this_thread::sleep_for(std::chrono::microseconds(500));
+    // As the window does (redraw on change, frame_pacing.h): a frame at once when a level is
+    // complete or still uploading, faces of a level in progress at most every 33 ms; otherwise the
+    // cores are left to the workers until the next level is complete, or 0.5 ms.
+    const bool pending = r.scene().uploadsPending();
+    if (!pacing.due(frameStart, consumer.completeLevel(), polled > 0 || pending, pending)) {
+      producer.waitForLevel(consumer.completeLevel() + 1, std::chrono::microseconds(500));
       continue;
     }
-    drawnLevel = consumer.completeLevel();
     auto status = r.drawFrame(camera);
     if (!status) {
       row.error = status.error().message;
@@ -131,6 +134,7 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
     const double b = static_cast<double>(r.lastUploadStats().bytes);
     bytes += b;
     row.maxBytes = std::max(row.maxBytes, b);
+    pacing.drawn(frameStart, consumer.completeLevel(), r.scene().uploadsPending());
     ++frames;
     // A level counts once every face reached it and everything it needs is on the GPU.
     while (seen < consumer.completeLevel() && !r.scene().uploadsPending()) {
