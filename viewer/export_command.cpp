@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "face_problems.h"
 #include "progress_bar.h"
+#include "terminal_load.h"
 
 namespace cetview {
 namespace {
@@ -38,7 +39,7 @@ int runExport(const ExportOptions& o) {
   }
   params.progressive = false;  // only the final level is written
   const auto start = std::chrono::steady_clock::now();
-  LoadResult loaded = loadModel(o.model);
+  LoadResult loaded = loadWithProgressBar(o.model, "export");
   if (!loaded) {
     std::fprintf(stderr, "cetview export: %s\n", loaded.error.c_str());
     return 2;

@@ -13,16 +13,17 @@
 #include "brep/tolerance.h"
 #include "commands.h"
 #include "device_loss.h"
-#include "face_problems.h"
 #include "engine/camera.h"
 #include "engine/context.h"
 #include "engine/image.h"
 #include "engine/renderer.h"
 #include "engine/warm_up.h"
+#include "face_problems.h"
 #include "model_scene.h"
 #include "progress_bar.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
+#include "terminal_load.h"
 
 namespace cetview {
 namespace {
@@ -104,7 +105,7 @@ int runRender(const RenderCli& cli) {
   if (std::string e = brep::parseAngle(cli.angle, params.angleDeg); !e.empty()) return fail(2, e);
   if (cli.threads < 1 || cli.threads > 256) return fail(2, "--threads must be 1 to 256");
 
-  brep::LoadResult loaded = brep::loadModel(cli.model);
+  brep::LoadResult loaded = loadWithProgressBar(cli.model, "render");
   if (!loaded) return fail(2, loaded.error);
   const auto loadedAt = std::chrono::steady_clock::now();
   const brep::Model& model = *loaded.model;

@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "background_load.h"
 #include "brep/model.h"
 #include "brep/tolerance.h"
 #include "camera_controller.h"
@@ -125,7 +126,14 @@ class Viewer {
   int run();
 
  private:
-  std::string openModel(const std::string& path);
+  // Opening runs in two steps: the file loads on a thread of its own (BackgroundLoad) while the
+  // window goes on showing the current model, and the loaded model replaces it once done.
+  void startOpen(const std::string& path);
+  void cancelOpen();
+  // Picks up a finished load: returns false when the run must end (the command line's model failed).
+  bool finishOpen();
+  std::string showModel(std::unique_ptr<brep::Model> model);
+  void drawLoadingPanel();
   void buildTree();
   void fitOrView(bool animate);
   glm::vec2 viewport() const;
@@ -153,7 +161,10 @@ class Viewer {
   const ViewCli& cli_;
   WindowGlue& glue_;
   engine::Renderer& r_;
-  std::unique_ptr<LiveTessellation> live_;
+  std::unique_ptr<LiveTessellation> live_;                  // null until the first model has loaded
+  std::unique_ptr<BackgroundLoad> loading_;                 // the load in progress, if any
+  std::vector<std::unique_ptr<BackgroundLoad>> abandoned_;  // cancelled loads still running out
+  std::string loadError_;  // the command line's model failed to load: the run ends with it
   brep::MeshParams initialParams_;
   CameraController camera_;
   engine::StandardView initialView_ = engine::StandardView::kIso;
@@ -179,6 +190,7 @@ class Viewer {
   std::deque<double> frameTimes_;  // seconds, the last 60
   double lastFrameMs_ = 0;
   std::uint64_t frame_ = 0;
+  std::uint64_t modelFrames_ = 0;  // frames drawn with a model open (--frames counts these)
 
   // Requests.
   std::string pendingOpen_;
@@ -212,13 +224,70 @@ glm::vec2 Viewer::viewport() const {
   return glm::vec2(static_cast<float>(w), static_cast<float>(h));
 }
 
-std::string Viewer::openModel(const std::string& path) {
-  brep::LoadResult loaded = brep::loadModel(path);
-  if (!loaded) return loaded.error;
-  if (std::string e = checkDisplayable(*loaded.model); !e.empty()) return path + ": " + e;
+void Viewer::startOpen(const std::string& path) {
+  if (loading_) cancelOpen();
+  loading_ = std::make_unique<BackgroundLoad>(path, [] { glfwPostEmptyEvent(); });
+  glfwSetWindowTitle(glue_.window(), ("cetview - loading " + path).c_str());
+}
+
+void Viewer::cancelOpen() {
+  if (!loading_) return;
+  // The window is free at once; the load stops at its next check and is reaped when it has.
+  loading_->cancel();
+  status_ = "cancelled loading " + loading_->path();
+  std::printf("cancelled: %s\n", loading_->path().c_str());
+  std::fflush(stdout);
+  abandoned_.push_back(std::move(loading_));
+  if (live_) glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
+}
+
+bool Viewer::finishOpen() {
+  abandoned_.erase(std::remove_if(abandoned_.begin(), abandoned_.end(),
+                                  [](const std::unique_ptr<BackgroundLoad>& l) { return l->done(); }),
+                   abandoned_.end());
+  if (!loading_ || !loading_->done()) return true;
+  const std::unique_ptr<BackgroundLoad> load = std::move(loading_);
+  brep::LoadResult loaded = load->take();
+  std::string error = loaded ? showModel(std::move(loaded.model)) : loaded.error;
+  if (error.empty()) {
+    status_.clear();
+    return true;
+  }
+  if (!live_) {
+    loadError_ = error;  // nothing to show: the command line's model (or every one since) failed
+    return false;
+  }
+  status_ = error;
+  std::fprintf(stderr, "cetview view: %s\n", error.c_str());
+  glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
+  return true;
+}
+
+void Viewer::drawLoadingPanel() {
+  const BackgroundLoad::Progress p = loading_->progress();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, kMenuHeight + kMargin), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(440.0f, 0.0f), ImGuiCond_Always);
+  ImGui::Begin("Loading", nullptr,
+               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("%s", loading_->path().c_str());
+  char overlay[96];
+  std::snprintf(overlay, sizeof overlay, "%s  %.0f%%", p.phase.c_str(), 100.0 * p.fraction);
+  ImGui::ProgressBar(static_cast<float>(p.fraction), ImVec2(-1.0f, 0.0f), overlay);
+  ImGui::Text("%.1f s", p.seconds);
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel (Esc)")) cancelOpen();
+  ImGui::End();
+}
+
+std::string Viewer::showModel(std::unique_ptr<brep::Model> model) {
+  const std::string path = model->source();
+  if (std::string e = checkDisplayable(*model); !e.empty()) return path + ": " + e;
   // The requested deflection: relative to this model's diagonal, or absolute as given.
   double absolute = 0;
-  const double diagonal = loaded.model->bounds().diagonal();
+  const double diagonal = model->bounds().diagonal();
   if (std::string e = brep::resolveDeflection(initialParams_.chordal, diagonal, absolute); !e.empty())
     return e;
   if (live_)
@@ -233,7 +302,7 @@ std::string Viewer::openModel(const std::string& path) {
   options.angleDeg = angleSlider_;
   options.threads = cli_.threads;
   options.wake = [] { glfwPostEmptyEvent(); };
-  auto created = LiveTessellation::create(std::move(loaded.model), r_.scene(), options);
+  auto created = LiveTessellation::create(std::move(model), r_.scene(), options);
   if (!created.live) return created.error;
   live_ = std::move(created.live);
   problemPrinted_.assign(live_->model().faces().size(), false);
@@ -309,6 +378,7 @@ void Viewer::handleInput() {
     }
   }
   if (!io.WantCaptureKeyboard) {
+    if (loading_ && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) cancelOpen();
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) camera_.fitAll(aspect, kTransitionSeconds);
     const std::pair<int, engine::StandardView> keys[] = {
         {GLFW_KEY_0, engine::StandardView::kIso},   {GLFW_KEY_1, engine::StandardView::kFront},
@@ -663,16 +733,18 @@ bool Viewer::frameNeeded() {
     --settleFrames_;
     return true;
   }
-  if (pacing_.due(now, live_->consumer().completeLevel(), polledSinceFrame_ || r_.scene().uploadsPending(),
-                  r_.scene().uploadsPending()))
+  if (live_ && pacing_.due(now, live_->consumer().completeLevel(),
+                           polledSinceFrame_ || r_.scene().uploadsPending(), r_.scene().uploadsPending()))
     return true;
   const bool scriptBusy = waitFrames_ > 0 || waitLevel_ != -2 || (waitingSeconds_ && now >= waitUntil_) ||
                           (!waitingSeconds_ && scriptNext_ < script_.size());
-  // While the model loads, the progress panel's clock moves even when no face has finished.
-  const bool progressTick = !live_->idle() && now - lastDrawn_ > std::chrono::milliseconds(250);
+  // While a file or the model's levels load, the progress panels' clocks move even when nothing
+  // has finished.
+  const bool progressTick =
+      (loading_ || (live_ && !live_->idle())) && now - lastDrawn_ > std::chrono::milliseconds(250);
   // The heat map is measured on a drawn frame once the workers are done (updateHeatMap), which
   // may be after the frame that showed the level complete.
-  const bool heatMapDue = heatMap_ && heatLevel_ != live_->targetLevel() && live_->idle();
+  const bool heatMapDue = live_ && heatMap_ && heatLevel_ != live_->targetLevel() && live_->idle();
   return frame_ < kSettleFrames || camera_.animating() || scriptBusy || cli_.frames > 0 ||
          !pendingScreenshot_.empty() || !pendingOpen_.empty() || quit_ || progressTick || heatMapDue;
 }
@@ -687,6 +759,14 @@ bool Viewer::stepScript() {
     waitingSeconds_ = false;
   }
   if (waitLevel_ != -2) {
+    if (loading_) return true;  // the level of the model being opened
+    if (!live_) {
+      waitLevel_ = -2;
+      std::fprintf(stderr, "cetview view: %s: 'wait level' with no model open\n", cli_.script.c_str());
+      exitCode_ = 2;
+      quit_ = true;
+      return false;
+    }
     const int level = waitLevel_ == -1 ? live_->targetLevel() : std::min(waitLevel_, live_->lastLevel());
     if (live_->consumer().completeLevel() < level || r_.scene().uploadsPending()) return true;
     if (heatMap_ && heatLevel_ != live_->targetLevel()) return true;
@@ -694,6 +774,13 @@ bool Viewer::stepScript() {
   }
   if (camera_.animating() || !pendingOpen_.empty() || !pendingScreenshot_.empty()) return true;
   if (scriptNext_ >= script_.size()) return true;
+  {
+    // A load in progress holds every command but those that do not need its model.
+    const ScriptCommand& next = script_[scriptNext_];
+    const bool independent =
+        next.name == "cancel" || next.name == "quit" || (next.name == "wait" && next.args[0] != "level");
+    if (loading_ && !independent) return true;
+  }
   const ScriptCommand& c = script_[scriptNext_++];
   const glm::vec2 vp = viewport();
   const float aspect = vp.y > 0 ? vp.x / vp.y : 1.0f;
@@ -710,6 +797,8 @@ bool Viewer::stepScript() {
     return end && *end == '\0' && std::isfinite(out);
   };
   double a = 0, b = 0;
+  if (!live_ && (c.name == "deflection" || c.name == "angle" || c.name == "heatmap"))
+    return bad("'" + c.name + "' with no model open");
   if (c.name == "deflection") {
     brep::Deflection d;
     if (std::string e = brep::parseDeflection(c.args[0], d); !e.empty()) return bad(e);
@@ -786,6 +875,8 @@ bool Viewer::stepScript() {
     pendingOpen_ = c.args[0];
   } else if (c.name == "quit") {
     quit_ = true;
+  } else if (c.name == "cancel") {
+    cancelOpen();
   }
   return true;
 }
@@ -814,7 +905,7 @@ int Viewer::run() {
     start.projection = *parseProjection(cli_.projection);
     camera_.reset(start, engine::Bounds{});
   }
-  if (std::string e = openModel(cli_.model); !e.empty()) return fail(2, e);
+  startOpen(cli_.model);
 
   // Files dropped onto the window open on the next frame.
   glfwSetWindowUserPointer(glue_.window(), this);
@@ -828,7 +919,8 @@ int Viewer::run() {
   while (true) {
     if (slept) {
       // Wakes on any window event; while the model loads, soon enough to pick up what arrives.
-      glfwWaitEventsTimeout(live_->idle() ? 0.1 : 0.004);
+      // A finished load and a completed level post an event.
+      glfwWaitEventsTimeout(live_ && !live_->idle() ? 0.004 : loading_ ? 0.05 : 0.1);
     } else {
       glfwPollEvents();
     }
@@ -837,15 +929,13 @@ int Viewer::run() {
     if (!pendingOpen_.empty()) {
       const std::string path = std::move(pendingOpen_);
       pendingOpen_.clear();
-      if (std::string e = openModel(path); !e.empty()) {
-        status_ = e;
-        std::fprintf(stderr, "cetview view: %s\n", e.c_str());
-      } else {
-        status_.clear();
-      }
+      startOpen(path);
     }
-    if (live_->poll(kPollBytesPerFrame) > 0) polledSinceFrame_ = true;
-    reportFaceProblems();
+    if (!finishOpen()) return fail(2, loadError_);
+    if (live_) {
+      if (live_->poll(kPollBytesPerFrame) > 0) polledSinceFrame_ = true;
+      reportFaceProblems();
+    }
     if (!frameNeeded()) {
       slept = true;
       continue;
@@ -864,8 +954,8 @@ int Viewer::run() {
     if (waitingSeconds_) ++framesWhileWaitingSeconds_;
     // The triangles' box once they exist (a file's B-rep box can miss instances), else the model's.
     const engine::Bounds sceneBounds = r_.scene().bounds();
-    camera_.setBounds(sceneBounds.empty() ? live_->modelScene().bounds() : sceneBounds);
-    if (refitPending_ && live_->consumer().completeLevel() >= 0 && !sceneBounds.empty()) {
+    if (live_) camera_.setBounds(sceneBounds.empty() ? live_->modelScene().bounds() : sceneBounds);
+    if (refitPending_ && live_ && live_->consumer().completeLevel() >= 0 && !sceneBounds.empty()) {
       // The first complete level: fit it, unless someone has moved the camera already.
       refitPending_ = false;
       const engine::Camera& c = camera_.camera();
@@ -876,21 +966,25 @@ int Viewer::run() {
       }
     }
     camera_.update(static_cast<float>(dt));
-    updateHeatMap();
+    if (live_) updateHeatMap();
 
     glue_.newImGuiFrame();
     drawMenu();
-    if (showTessellation_) drawTessellationPanel();
-    if (showProgress_) drawProgressPanel();
-    if (showDisplay_) drawDisplayPanel();
-    if (showModel_) drawModelPanel();
+    if (live_) {
+      if (showTessellation_) drawTessellationPanel();
+      if (showProgress_) drawProgressPanel();
+      if (showDisplay_) drawDisplayPanel();
+      if (showModel_) drawModelPanel();
+    }
     if (showStats_) drawStatsPanel();
+    if (loading_) drawLoadingPanel();
     handleInput();
     if (!script_.empty()) stepScript();
     glue_.finishImGuiFrame();
 
+    // --frames counts the frames that show a model: those drawn while the first one loads do not.
     const bool lastFrame =
-        quit_ || (cli_.frames > 0 && frame_ + 1 >= static_cast<std::uint64_t>(cli_.frames));
+        quit_ || (cli_.frames > 0 && live_ && modelFrames_ + 1 >= static_cast<std::uint64_t>(cli_.frames));
     std::string shot = pendingScreenshot_;
     if (lastFrame && !cli_.screenshot.empty()) shot = cli_.screenshot;
     engine::ViewStyle style = style_;
@@ -923,14 +1017,17 @@ int Viewer::run() {
       auto status = r_.drawFrame(camera_.camera(), style);
       if (!status) return fail(1, engineErrorLine(status.error()));
     }
-    pacing_.drawn(now, live_->consumer().completeLevel(), r_.scene().uploadsPending());
+    if (live_) {
+      pacing_.drawn(now, live_->consumer().completeLevel(), r_.scene().uploadsPending());
+      ++modelFrames_;
+    }
     polledSinceFrame_ = false;
     ++frame_;
     if (lastFrame) break;
   }
   if (auto s = r_.waitIdle(); !s) return fail(1, engineErrorLine(s.error()));
   if (exitCode_ != 0) return exitCode_;
-  {
+  if (live_) {
     // One line for scripts and tests: what the window showed at the end.
     const auto& stats = live_->consumer().levelStats();
     const int target = live_->targetLevel();
@@ -943,6 +1040,8 @@ int Viewer::run() {
         live_->consumer().completeLevel(),
         live_->levelTolerance(target), static_cast<unsigned long long>(live_->consumer().shownTriangles()),
         levelTriangles);
+  } else {
+    std::printf("{\"frames\":%llu,\"model\":null}\n", static_cast<unsigned long long>(frame_));
   }
   if (cli_.validate && glue_.validationCount() > 0) {
     return fail(1,

@@ -13,7 +13,10 @@
 //   wait level K|target                   until level K (or the slider's level) is complete and shown
 //   wait frames N
 //   wait seconds S                        S seconds, drawing only what changes (as when nobody scripts)
-//   screenshot FILE.png                   open FILE      quit
+//   screenshot FILE.png                   quit
+//   open FILE                             starts loading FILE; the next command (but cancel and
+//                                         wait frames|seconds) waits until it has opened or failed
+//   cancel                                cancels the load in progress (the current model stays)
 #pragma once
 
 #include <string>

@@ -52,6 +52,16 @@ TEST(Load, EmptyFile) { expectError(writeText("empty.step", ""), "empty file"); 
 
 TEST(Load, Directory) { expectError("/tmp", "directory"); }
 
+// A pipe with no writer: opening it to read would wait for ever (the window would load it for ever).
+TEST(Load, PipeOrDevice) {
+  const std::string fifo = test::tempPath("model.step");
+  ::unlink(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expectError(fifo, "not a regular file");
+  ::unlink(fifo.c_str());
+  expectError("/dev/null", "not a regular file");
+}
+
 TEST(Load, NotACadFile) {
   expectError(writeText("notes.txt", "just some text\nnot a model\n"), "not a CAD model");
   expectError(writeText("fake.step", "PK\x03\x04 this is a zip, not STEP"), "not a valid step file");

@@ -33,6 +33,8 @@ TEST(ViewScript, RejectsUnknownCommandsAndWrongArgumentCounts) {
   EXPECT_EQ(parseScript("wait minutes 3\n", "s.txt").error,
             "s.txt:1: 'wait' needs 'level K|target', 'frames N' or 'seconds S'");
   EXPECT_TRUE(parseScript("wait seconds 3\n", "s.txt").error.empty());
+  EXPECT_TRUE(parseScript("open part.step\ncancel\n", "s.txt").error.empty());
+  EXPECT_EQ(parseScript("cancel now\n", "s.txt").error, "s.txt:1: 'cancel' takes 0 argument(s), not 1");
   EXPECT_FALSE(loadScript("/nonexistent/script.txt").error.empty());
 }
 

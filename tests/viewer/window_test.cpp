@@ -197,6 +197,59 @@ TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
   EXPECT_NE(log.find("/nonexistent/model.step"), std::string::npos) << log;
 }
 
+// A file loads on a thread of its own while the window goes on: a load cancelled right after it
+// started leaves the current model shown, and the file is never opened.
+TEST_F(ViewerWindowTest, ScriptCancelsALoadAndTheCurrentModelStays) {
+  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Bottom.brep";
+  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string script = writeScript("cancel.script",
+                                         "wait level target\n"
+                                         "open " +
+                                             model +
+                                             "\n"
+                                             "cancel\n"
+                                             "wait frames 2\n"
+                                             "wait level target\n"
+                                             "quit\n");
+  std::string log;
+  ASSERT_EQ(runViewer("view demo --size 640x400 --frames 3000 --threads 2 --script " + script, log), 0)
+      << log;
+  EXPECT_NE(log.find("opened: demo"), std::string::npos) << log;
+  EXPECT_NE(log.find("cancelled: " + model), std::string::npos) << log;
+  EXPECT_EQ(log.find("opened: " + model), std::string::npos) << log;
+  expectWholeLevelShown(log);
+}
+
+// While a file loads, the window draws the current model and a Loading panel (top centre) with
+// the file's progress; quitting then ends the load.
+TEST_F(ViewerWindowTest, TheLoadingPanelShowsWhileAFileLoads) {
+  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Bottom.brep";
+  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string script = writeScript("loading.script",
+                                         "panel tessellation off\n"
+                                         "panel display off\n"
+                                         "wait level target\n"
+                                         "open " +
+                                             model +
+                                             "\n"
+                                             "quit\n");  // in the frame the load starts
+  const std::string shot = outputPath("loading.png");
+  std::remove(shot.c_str());
+  std::string log;
+  ASSERT_EQ(runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
+                          " --screenshot " + shot,
+                      log),
+            0)
+      << log;
+  EXPECT_EQ(log.find("opened: " + model), std::string::npos) << log;
+  auto image = engine::readPng(shot);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  EXPECT_GT(modelCoverage(*image), 0.1);          // the demo, still shown
+  EXPECT_TRUE(imguiDark(at(*image, 600, 110)));   // the Loading panel, top centre, beside its button
+  EXPECT_TRUE(imguiDark(at(*image, 680, 56)));    // ... and beside the file's name
+  EXPECT_FALSE(imguiDark(at(*image, 480, 200)));  // below it, the scene
+}
+
 // Once the model is shown and nothing moves, the viewer stops drawing (redraw on change): over two
 // still seconds it draws a few settling frames, where drawing every pass would draw a hundred or more.
 TEST_F(ViewerWindowTest, StillModelIsNotRedrawn) {

@@ -31,7 +31,7 @@ void silenceOcctMessages() {
   std::call_once(once, [] { Message::DefaultMessenger()->ChangePrinters().Clear(); });
 }
 
-std::string loadBrepFile(ModelImpl& m, const std::string& path) {
+std::string loadBrepFile(ModelImpl& m, const std::string& path, LoadProgress& progress) {
   TopoDS_Shape shape;
   BRep_Builder builder;
   std::ifstream in(path, std::ios::binary);
@@ -39,10 +39,12 @@ std::string loadBrepFile(ModelImpl& m, const std::string& path) {
   // number belongs): with exceptions on, the failed read ends the load instead (loadModel reports it).
   in.exceptions(std::ios::badbit | std::ios::failbit);
   try {
-    BRepTools::Read(shape, in, builder);
+    progress.phase("reading", 0.0, 0.85);
+    BRepTools::Read(shape, in, builder, progress.indicator()->Start());
   } catch (const std::ios_base::failure&) {
     return "not a readable OpenCASCADE .brep file (malformed or truncated)";
   }
+  if (progress.cancelled()) return "cancelled";
   if (shape.IsNull()) return "not a readable OpenCASCADE .brep file (truncated or malformed)";
   std::string name = path.substr(path.find_last_of('/') + 1);
   addPartsFromShape(m, shape, name.substr(0, name.find_last_of('.')));

@@ -61,7 +61,7 @@ Color toColor(const Quantity_ColorRGBA& c) {
 
 }  // namespace
 
-std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges) {
+std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges, LoadProgress& progress) {
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) doc;
   app->NewDocument("MDTV-XCAF", doc);
@@ -70,9 +70,12 @@ std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges) {
     reader.SetColorMode(true);
     reader.SetNameMode(true);
     reader.SetLayerMode(false);
+    progress.phase("reading", 0.0, 0.4);
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return "not a readable IGES file";
+    if (progress.cancelled()) return "cancelled";
     if (reader.NbRootsForTransfer() == 0) return "the IGES file holds no geometry to transfer";
-    if (!reader.Transfer(doc)) return "IGES transfer failed";
+    progress.phase("transferring", 0.4, 0.85);
+    if (!reader.Transfer(doc, progress.indicator()->Start())) return "IGES transfer failed";
   } else {
     STEPCAFControl_Reader reader;
     reader.SetColorMode(true);
@@ -82,9 +85,13 @@ std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges) {
     reader.SetGDTMode(false);
     reader.SetMatMode(false);
     reader.SetViewMode(false);
+    progress.phase("reading", 0.0, 0.4);
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return "not a readable STEP file (truncated or malformed)";
+    if (progress.cancelled()) return "cancelled";
     if (reader.ChangeReader().NbRootsForTransfer() == 0) return "the STEP file holds no shape to transfer";
-    if (!reader.Transfer(doc)) {
+    progress.phase("transferring", 0.4, 0.85);
+    if (!reader.Transfer(doc, progress.indicator()->Start())) {
+      if (progress.cancelled()) return "cancelled";
       return mentionsTessellatedGeometry(path) ? "no B-rep faces: the STEP file holds only tessellated geometry"
                                                : "STEP transfer failed (no shape could be made from its entities)";
     }

@@ -77,14 +77,16 @@ Format sniff(const std::string& head) {
 
 }  // namespace
 
-LoadResult loadModel(const std::string& pathOrDemo) {
+LoadResult loadModel(const std::string& pathOrDemo, const LoadControl& control) {
   silenceOcctMessages();
   LoadResult result;
   auto impl = std::make_unique<ModelImpl>();
   impl->source = pathOrDemo;
+  LoadProgress progress(control);
   std::string error;
   try {
     if (pathOrDemo == "demo") {
+      progress.phase("building the demo part", 0.0, 0.85);
       addPartsFromShape(*impl, buildDemoPart(), "demo bracket");
     } else {
       struct stat st {};
@@ -94,6 +96,11 @@ LoadResult loadModel(const std::string& pathOrDemo) {
       }
       if (S_ISDIR(st.st_mode)) {
         result.error = pathOrDemo + ": is a directory, not a model file";
+        return result;
+      }
+      if (!S_ISREG(st.st_mode)) {
+        // Opening a pipe or a terminal for reading would wait for a writer, perhaps for ever.
+        result.error = pathOrDemo + ": not a regular file (a pipe or a device)";
         return result;
       }
       std::ifstream in(pathOrDemo, std::ios::binary);
@@ -117,20 +124,30 @@ LoadResult loadModel(const std::string& pathOrDemo) {
                                              : ": not a CAD model (expected STEP, IGES or .brep)");
         return result;
       }
-      if (format == Format::kStep) error = loadXcaf(*impl, pathOrDemo, false);
-      if (format == Format::kIges) error = loadXcaf(*impl, pathOrDemo, true);
-      if (format == Format::kBrep) error = loadBrepFile(*impl, pathOrDemo);
+      if (format == Format::kStep) error = loadXcaf(*impl, pathOrDemo, false, progress);
+      if (format == Format::kIges) error = loadXcaf(*impl, pathOrDemo, true, progress);
+      if (format == Format::kBrep) error = loadBrepFile(*impl, pathOrDemo, progress);
     }
-    if (error.empty()) error = finalizeModel(*impl);
+    if (error.empty() && !progress.cancelled()) {
+      progress.phase("indexing faces", 0.85, 1.0);
+      error = finalizeModel(*impl, progress);
+    }
   } catch (const Standard_Failure& e) {
     error = std::string("OpenCASCADE failed to read it: ") + e.GetMessageString();
   } catch (const std::exception& e) {
     error = std::string("failed to read it: ") + e.what();
   }
+  if (progress.cancelled()) {
+    // Whatever the readers made of an interrupted run (an error, a partial model), it is dropped.
+    result.error = pathOrDemo + ": cancelled";
+    result.cancelled = true;
+    return result;
+  }
   if (!error.empty()) {
     result.error = (pathOrDemo == "demo" ? std::string("demo") : pathOrDemo) + ": " + error;
     return result;
   }
+  progress.within(1.0);
   result.model = std::make_unique<Model>(std::move(impl));
   return result;
 }

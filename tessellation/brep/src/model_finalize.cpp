@@ -268,9 +268,10 @@ void addInstance(ModelImpl& m, PartId part, const gp_Trsf& placement, const std:
   m.instances.push_back(std::move(inst));
 }
 
-std::string finalizeModel(ModelImpl& m) {
+std::string finalizeModel(ModelImpl& m, LoadProgress& progress) {
   m.partEdgeMaps.resize(m.parts.size());
   for (PartId p = 0; p < m.parts.size(); ++p) {
+    if (progress.cancelled()) return "cancelled";
     PartInfo& part = m.parts[p];
     const TopoDS_Shape& shape = m.partShapes[p];
     TopTools_IndexedMapOfShape faceMap;
@@ -295,6 +296,9 @@ std::string finalizeModel(ModelImpl& m) {
       }
     }
     for (int i = 1; i <= faceMap.Extent(); ++i) {
+      if (progress.cancelled()) return "cancelled";
+      progress.within((p + static_cast<double>(i - 1) / faceMap.Extent()) /
+                      static_cast<double>(m.parts.size()));
       const TopoDS_Face& face = TopoDS::Face(faceMap(i));
       std::string repairs = addMissingPcurves(face);
       const std::string rows = fixFalseDegenerateEdges(face);

@@ -12,6 +12,7 @@
 #include <gp_Trsf.hxx>
 
 #include "brep/model.h"
+#include "load_progress.h"
 
 namespace cetview::brep {
 
@@ -55,11 +56,13 @@ void addInstance(ModelImpl& m, PartId part, const gp_Trsf& placement, const std:
                  std::vector<std::string> path);
 // Indexes faces and edges of every part, computes face kinds, areas, closedness and boxes.
 // Returns an error line when the model has no B-rep face.
-std::string finalizeModel(ModelImpl& m);
+// Reports within the current phase of `progress` and stops (returning an error) when cancelled.
+std::string finalizeModel(ModelImpl& m, LoadProgress& progress);
 
-// Format loaders: fill parts and instances (before finalizeModel) or return an error line.
-std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges);
-std::string loadBrepFile(ModelImpl& m, const std::string& path);
+// Format loaders: fill parts and instances (before finalizeModel) or return an error line. They
+// report their phases through `progress` and stop early when it is cancelled.
+std::string loadXcaf(ModelImpl& m, const std::string& path, bool iges, LoadProgress& progress);
+std::string loadBrepFile(ModelImpl& m, const std::string& path, LoadProgress& progress);
 // Splits a plain shape into parts: solids or shells used at several places become one part with
 // several instances; everything else is one part.
 void addPartsFromShape(ModelImpl& m, const TopoDS_Shape& shape, const std::string& name);

@@ -8,7 +8,9 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,12 +100,25 @@ class Model {
 struct LoadResult {
   std::unique_ptr<Model> model;  // null on error
   std::string error;             // one line, set when model is null
+  bool cancelled = false;        // the load stopped because LoadControl::cancel was raised
   explicit operator bool() const { return model != nullptr; }
+};
+
+// Progress and cancellation of a load (a large STEP file takes seconds to minutes).
+struct LoadControl {
+  // Called on the loading thread with the phase ("reading", "transferring", "indexing faces")
+  // and the fraction of the whole load done, in [0, 1], rising. The reading of a STEP or IGES
+  // file (OpenCASCADE's parser) reports only its start.
+  std::function<void(const char* phase, double fraction)> progress;
+  // Raised (from any thread), the load stops at its next check: between OpenCASCADE's transfer
+  // steps, between faces, and after the parser, which cannot be stopped inside.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // Loads a STEP (.step/.stp, through XCAF: names, colours, assembly), IGES (.iges/.igs, through XCAF)
 // or OpenCASCADE .brep file; "demo" builds the demo part. Any failure (missing, unreadable, empty,
-// truncated, not a CAD file, no B-rep faces) is returned as an error, never thrown.
-LoadResult loadModel(const std::string& pathOrDemo);
+// truncated, not a CAD file, no B-rep faces) is returned as an error, never thrown; a cancelled
+// load returns error "PATH: cancelled" and `cancelled`.
+LoadResult loadModel(const std::string& pathOrDemo, const LoadControl& control = {});
 
 }  // namespace cetview::brep
