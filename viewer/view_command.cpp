@@ -130,7 +130,8 @@ class Viewer {
   // window goes on showing the current model, and the loaded model replaces it once done.
   void startOpen(const std::string& path);
   void cancelOpen();
-  // Picks up a finished load: returns false when the run must end (the command line's model failed).
+  // Picks up a finished load: returns false when the run must end (the command line's model
+  // failed to load; a file opened later that fails is reported and the window goes on).
   bool finishOpen();
   std::string showModel(std::unique_ptr<brep::Model> model);
   void drawLoadingPanel();
@@ -164,7 +165,8 @@ class Viewer {
   std::unique_ptr<LiveTessellation> live_;                  // null until the first model has loaded
   std::unique_ptr<BackgroundLoad> loading_;                 // the load in progress, if any
   std::vector<std::unique_ptr<BackgroundLoad>> abandoned_;  // cancelled loads still running out
-  std::string loadError_;  // the command line's model failed to load: the run ends with it
+  bool commandLineLoad_ = true;  // the load in progress is the command line's model
+  std::string loadError_;        // the command line's model failed to load: the run ends with it
   brep::MeshParams initialParams_;
   CameraController camera_;
   engine::StandardView initialView_ = engine::StandardView::kIso;
@@ -226,6 +228,7 @@ glm::vec2 Viewer::viewport() const {
 
 void Viewer::startOpen(const std::string& path) {
   if (loading_) cancelOpen();
+  commandLineLoad_ = frame_ == 0 && !live_;
   loading_ = std::make_unique<BackgroundLoad>(path, [] { glfwPostEmptyEvent(); });
   glfwSetWindowTitle(glue_.window(), ("cetview - loading " + path).c_str());
 }
@@ -253,13 +256,13 @@ bool Viewer::finishOpen() {
     status_.clear();
     return true;
   }
-  if (!live_) {
-    loadError_ = error;  // nothing to show: the command line's model (or every one since) failed
+  if (commandLineLoad_) {
+    loadError_ = error;  // as when the command line names a bad file: one line, exit code 2
     return false;
   }
   status_ = error;
   std::fprintf(stderr, "cetview view: %s\n", error.c_str());
-  glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
+  glfwSetWindowTitle(glue_.window(), live_ ? ("cetview - " + live_->model().source()).c_str() : "cetview");
   return true;
 }
 

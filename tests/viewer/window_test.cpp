@@ -220,6 +220,23 @@ TEST_F(ViewerWindowTest, ScriptCancelsALoadAndTheCurrentModelStays) {
   expectWholeLevelShown(log);
 }
 
+// The command line's model cancelled before it loaded: the window goes on with no model, and a
+// file that then fails to open is reported without ending the run (only the command line's model
+// failing does).
+TEST_F(ViewerWindowTest, WithTheFirstLoadCancelledTheWindowGoesOnWithoutAModel) {
+  const std::string script = writeScript("nomodel.script",
+                                         "cancel\n"
+                                         "open /nonexistent/model.step\n"
+                                         "wait frames 3\n"
+                                         "quit\n");
+  std::string log;
+  ASSERT_EQ(runViewer("view demo --size 640x400 --validate --threads 2 --script " + script, log), 0) << log;
+  EXPECT_NE(log.find("cancelled: demo"), std::string::npos) << log;
+  EXPECT_NE(log.find("/nonexistent/model.step: no such file"), std::string::npos) << log;
+  EXPECT_EQ(log.find("opened:"), std::string::npos) << log;
+  EXPECT_NE(log.find("\"model\":null"), std::string::npos) << log;
+}
+
 // While a file loads, the window draws the current model and a Loading panel (top centre) with
 // the file's progress; quitting then ends the load.
 TEST_F(ViewerWindowTest, TheLoadingPanelShowsWhileAFileLoads) {
