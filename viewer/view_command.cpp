@@ -135,6 +135,7 @@ class Viewer {
   bool finishOpen();
   std::string showModel(std::unique_ptr<brep::Model> model);
   void drawLoadingPanel();
+  void waitForLoads();  // at exit: cancels the load in progress and waits for every load
   void buildTree();
   void fitOrView(bool animate);
   glm::vec2 viewport() const;
@@ -166,6 +167,7 @@ class Viewer {
   std::unique_ptr<BackgroundLoad> loading_;                 // the load in progress, if any
   std::vector<std::unique_ptr<BackgroundLoad>> abandoned_;  // cancelled loads still running out
   bool commandLineLoad_ = true;  // the load in progress is the command line's model
+  double loadSeconds_ = 0;       // how long the open model took to load
   std::string loadError_;        // the command line's model failed to load: the run ends with it
   brep::MeshParams initialParams_;
   CameraController camera_;
@@ -250,10 +252,12 @@ bool Viewer::finishOpen() {
                    abandoned_.end());
   if (!loading_ || !loading_->done()) return true;
   const std::unique_ptr<BackgroundLoad> load = std::move(loading_);
+  const double seconds = load->progress().seconds;
   brep::LoadResult loaded = load->take();
   std::string error = loaded ? showModel(std::move(loaded.model)) : loaded.error;
   if (error.empty()) {
     status_.clear();
+    loadSeconds_ = seconds;
     return true;
   }
   if (commandLineLoad_) {
@@ -264,6 +268,22 @@ bool Viewer::finishOpen() {
   std::fprintf(stderr, "cetview view: %s\n", error.c_str());
   glfwSetWindowTitle(glue_.window(), live_ ? ("cetview - " + live_->model().source()).c_str() : "cetview");
   return true;
+}
+
+void Viewer::waitForLoads() {
+  if (loading_) cancelOpen();
+  // Loads stop at OpenCASCADE's next check, but its STEP and IGES parser cannot be stopped: say
+  // why the window is slow to close rather than hang without a word.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
+  auto running = [&] {
+    return std::any_of(abandoned_.begin(), abandoned_.end(),
+                       [](const std::unique_ptr<BackgroundLoad>& l) { return !l->done(); });
+  };
+  while (running() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (running())
+    std::fprintf(stderr, "cetview view: waiting for OpenCASCADE to finish parsing the cancelled file\n");
+  abandoned_.clear();  // joins
 }
 
 void Viewer::drawLoadingPanel() {
@@ -664,6 +684,7 @@ void Viewer::drawModelPanel() {
   ImGui::TextWrapped("%s", m.source().c_str());
   ImGui::Text("%zu faces, %zu parts, %zu instances", m.faces().size(), m.parts().size(),
               m.instances().size());
+  ImGui::Text("loaded in %.2f s", loadSeconds_);
   const brep::Bounds b = m.bounds();
   if (!b.empty()) {
     ImGui::Text("min %.4g %.4g %.4g", b.min[0], b.min[1], b.min[2]);
@@ -1029,6 +1050,7 @@ int Viewer::run() {
     if (lastFrame) break;
   }
   if (auto s = r_.waitIdle(); !s) return fail(1, engineErrorLine(s.error()));
+  waitForLoads();
   if (exitCode_ != 0) return exitCode_;
   if (live_) {
     // One line for scripts and tests: what the window showed at the end.
