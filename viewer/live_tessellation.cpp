@@ -60,6 +60,7 @@ std::string LiveTessellation::start() {
   visible_.resize(model_->instances().size(), true);
   applyVisibility();
   target_ = 0;
+  heldAt_ = 0;  // a new schedule: held, it stops at level 0
   problemsReady_ = false;
   stream::StreamOptions streamOptions;
   streamOptions.threads = threads_;
@@ -83,9 +84,15 @@ int LiveTessellation::setDeflection(double absolute) {
   }
   if (level != target_) problemsReady_ = false;
   target_ = level;
-  producer_->setTargetLevel(level);
+  producer_->setTargetLevel(held_ ? std::min(level, heldAt_) : level);
   consumer_->setShowLevel(level, *link_);
   return level;
+}
+
+void LiveTessellation::holdFinerLevels(bool hold) {
+  held_ = hold;
+  heldAt_ = std::min(target_, std::max(0, consumer_->completeLevel()));
+  producer_->setTargetLevel(hold ? heldAt_ : target_);
 }
 
 std::string LiveTessellation::setAngle(double degrees) {

@@ -77,6 +77,11 @@ class LiveTessellation {
   const stream::StreamConsumer& consumer() const { return *consumer_; }
   stream::StreamProgress progress() const { return producer_->progress(); }
   bool idle() const { return producer_->idle(); }
+  // While another file loads, the levels finer than the one shown now wait (the cores go to the
+  // load, and the model is about to be replaced); released, refinement goes on towards the target.
+  // Level 0 is always finished.
+  void holdFinerLevels(bool hold);
+  bool holdingFinerLevels() const { return held_; }
   int targetLevel() const { return target_; }
   int lastLevel() const { return tess_->lastLevel(); }
   double levelTolerance(int level) const {
@@ -110,6 +115,8 @@ class LiveTessellation {
   double diagonal_ = 1, finestAbsolute_ = 0, requested_ = 0, angleDeg_ = 20;
   unsigned threads_ = 1;
   std::function<void()> wake_;
+  bool held_ = false;
+  int heldAt_ = 0;  // the level the producer stops at while held
   int target_ = 0;
   std::vector<bool> visible_;                      // per model instance
   std::vector<engine::PartRange> heatParts_;       // per model part: one face per (face, bin) in use

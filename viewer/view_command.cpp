@@ -230,6 +230,7 @@ glm::vec2 Viewer::viewport() const {
 
 void Viewer::startOpen(const std::string& path) {
   if (loading_) cancelOpen();
+  if (live_) live_->holdFinerLevels(true);  // the cores go to the load; the model is about to go
   commandLineLoad_ = frame_ == 0 && !live_;
   loading_ = std::make_unique<BackgroundLoad>(path, [] { glfwPostEmptyEvent(); });
   glfwSetWindowTitle(glue_.window(), ("cetview - loading " + path).c_str());
@@ -243,6 +244,7 @@ void Viewer::cancelOpen() {
   std::printf("cancelled: %s\n", loading_->path().c_str());
   std::fflush(stdout);
   abandoned_.push_back(std::move(loading_));
+  if (live_) live_->holdFinerLevels(false);
   if (live_) glfwSetWindowTitle(glue_.window(), ("cetview - " + live_->model().source()).c_str());
 }
 
@@ -266,6 +268,7 @@ bool Viewer::finishOpen() {
   }
   status_ = error;
   std::fprintf(stderr, "cetview view: %s\n", error.c_str());
+  if (live_) live_->holdFinerLevels(false);
   glfwSetWindowTitle(glue_.window(), live_ ? ("cetview - " + live_->model().source()).c_str() : "cetview");
   return true;
 }

@@ -161,5 +161,36 @@ TEST(LiveTessellation, FinerTargetShowsTheWholeLevel) {
   }
 }
 
+// While another file loads, the window holds the current model's finer levels: the stream stops
+// at the level shown when the hold began (the level in progress is cancelled) and stays there;
+// released, it goes on to the target.
+TEST(LiveTessellation, HeldFinerLevelsWaitAndReleasedGoOn) {
+  engine::Scene scene;
+  std::unique_ptr<LiveTessellation> started = startDemo(scene);
+  ASSERT_TRUE(started);
+  LiveTessellation& live = *started;
+  live.setDeflection(live.finestAbsolute());  // the last level: far more work than level 0
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (live.consumer().completeLevel() < 0 && std::chrono::steady_clock::now() < deadline) {
+    live.poll(std::size_t{64} << 20);
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_GE(live.consumer().completeLevel(), 0);
+  live.holdFinerLevels(true);
+  EXPECT_TRUE(live.holdingFinerLevels());
+  while (!live.idle() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_TRUE(live.idle()) << "the held stream did not stop";
+  live.poll(std::size_t{64} << 20);
+  const int held = live.consumer().completeLevel();
+  EXPECT_LT(held, live.targetLevel());
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  live.poll(std::size_t{64} << 20);
+  EXPECT_EQ(live.consumer().completeLevel(), held) << "a held stream went on";
+  live.holdFinerLevels(false);
+  ASSERT_TRUE(settle(live));
+  EXPECT_EQ(live.consumer().completeLevel(), live.targetLevel());
+}
+
 }  // namespace
 }  // namespace cetview::test
