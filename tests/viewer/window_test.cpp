@@ -37,11 +37,16 @@ int runViewer(const std::string& args, std::string& log, std::string* err = null
   const std::string logPath =
       outputPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
   const std::string errPath = logPath + ".err";
-  const std::string command = env + " xvfb-run -a -s '-screen 0 1024x768x24' " + std::string(CETVIEW_EXE) +
-                              " " + args + " > " + logPath + (err ? " 2>" + errPath : " 2>&1");
+  // cetview's own exit code goes to a file: xvfb-run's (5 when it cannot clean up its temporary
+  // directory, which happened once under load after cetview had exited) would hide it.
+  const std::string codePath = logPath + ".code";
+  const std::string command = env + " xvfb-run -a -s '-screen 0 1024x768x24' sh -c '" +
+                              std::string(CETVIEW_EXE) + " " + args + "; echo $? > " + codePath + "' > " +
+                              logPath + (err ? " 2>" + errPath : " 2>&1");
   int code = -1;
   // xvfb-run -a can race another test's server for a display number: try again then.
   for (int attempt = 0; attempt < 3; ++attempt) {
+    std::remove(codePath.c_str());
     const int status = std::system(command.c_str());
     std::ifstream in(logPath);
     log.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -52,9 +57,11 @@ int runViewer(const std::string& args, std::string& log, std::string* err = null
       errors = *err;
     }
     code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream codeIn(codePath);
+    const bool ran = static_cast<bool>(codeIn >> code);  // cetview ran to its end
     const std::string all = log + errors;
-    if (all.find("xvfb-run: error") == std::string::npos &&
-        all.find("Server is already active") == std::string::npos)
+    if (ran || (all.find("xvfb-run: error") == std::string::npos &&
+                all.find("Server is already active") == std::string::npos))
       break;
   }
   return code;
