@@ -30,6 +30,7 @@
 #include "engine/renderer.h"
 #include "frame_pacing.h"
 #include "live_tessellation.h"
+#include "open_dialog.h"
 #include "view_script.h"
 #include "window_glue.h"
 
@@ -135,6 +136,7 @@ class Viewer {
   bool finishOpen();
   std::string showModel(std::unique_ptr<brep::Model> model);
   void drawLoadingPanel();
+  std::string browseDirectory() const;  // where File > Open starts
   void waitForLoads();  // at exit: cancels the load in progress and waits for every load
   void buildTree();
   void fitOrView(bool animate);
@@ -185,8 +187,7 @@ class Viewer {
        showStats_ = true;
   bool absoluteUnits_ = false;
   float angleSlider_ = 20.0f;
-  char openPath_[1024] = {};
-  bool openPopup_ = false;
+  OpenDialog openDialog_;
   std::vector<bool> problemPrinted_;  // per face of the open model
   std::string status_;  // one line shown in the stats panel (errors of open, screenshot)
 
@@ -442,7 +443,7 @@ void Viewer::drawMenu() {
   const float aspect = vp.y > 0 ? vp.x / vp.y : 1.0f;
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Open...")) openPopup_ = true;
+    if (ImGui::MenuItem("Open...")) openDialog_.open(browseDirectory());
     if (ImGui::MenuItem("Open demo part")) pendingOpen_ = "demo";
     if (ImGui::MenuItem("Screenshot", "F12")) pendingScreenshot_ = screenshotName();
     ImGui::Separator();
@@ -477,23 +478,15 @@ void Viewer::drawMenu() {
   }
   ImGui::EndMainMenuBar();
 
-  if (openPopup_) {
-    ImGui::OpenPopup("Open model");
-    openPopup_ = false;
-  }
-  if (ImGui::BeginPopupModal("Open model", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::TextUnformatted("STEP, IGES or .brep file (or drop one onto the window)");
-    ImGui::SetNextItemWidth(420.0f);
-    const bool enter =
-        ImGui::InputText("##path", openPath_, sizeof openPath_, ImGuiInputTextFlags_EnterReturnsTrue);
-    if (ImGui::Button("Open") || enter) {
-      pendingOpen_ = openPath_;
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
+  if (std::optional<std::string> chosen = openDialog_.draw()) pendingOpen_ = *chosen;
+}
+
+std::string Viewer::browseDirectory() const {
+  // The folder of the model shown (or being loaded), else the working directory.
+  const std::string source = loading_ ? loading_->path() : live_ ? live_->model().source() : std::string();
+  const auto slash = source.find_last_of('/');
+  if (source == "demo" || slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : source.substr(0, slash);
 }
 
 void Viewer::drawTessellationPanel() {
@@ -904,6 +897,8 @@ bool Viewer::stepScript() {
     quit_ = true;
   } else if (c.name == "cancel") {
     cancelOpen();
+  } else if (c.name == "browse") {
+    openDialog_.open(c.args[0]);
   }
   return true;
 }

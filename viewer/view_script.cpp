@@ -12,10 +12,10 @@ struct Arity {
   int min, max;
 };
 constexpr Arity kCommands[] = {
-    {"deflection", 1, 1}, {"angle", 1, 1},   {"view", 1, 1}, {"projection", 1, 1}, {"display", 1, 1},
-    {"colors", 1, 1},     {"heatmap", 1, 1}, {"fit", 0, 0},  {"panel", 2, 2},      {"orbit", 2, 2},
-    {"pan", 2, 2},        {"zoom", 1, 1},    {"wait", 2, 2}, {"screenshot", 1, 1}, {"open", 1, 1},
-    {"quit", 0, 0},       {"cancel", 0, 0},
+    {"deflection", 1, 1}, {"angle", 1, 1},   {"view", 1, 1},   {"projection", 1, 1}, {"display", 1, 1},
+    {"colors", 1, 1},     {"heatmap", 1, 1}, {"fit", 0, 0},    {"panel", 2, 2},      {"orbit", 2, 2},
+    {"pan", 2, 2},        {"zoom", 1, 1},    {"wait", 2, 2},   {"screenshot", 1, 1}, {"open", 1, 1},
+    {"quit", 0, 0},       {"cancel", 0, 0},  {"browse", 1, 1},
 };
 
 }  // namespace

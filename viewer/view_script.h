@@ -17,6 +17,7 @@
 //   open FILE                             starts loading FILE; the next command (but cancel and
 //                                         wait frames|seconds) waits until it has opened or failed
 //   cancel                                cancels the load in progress (the current model stays)
+//   browse DIR                            shows the File > Open dialog listing DIR
 #pragma once
 
 #include <string>

@@ -274,6 +274,52 @@ TEST_F(ViewerWindowTest, TheLoadingPanelShowsWhileAFileLoads) {
   EXPECT_FALSE(imguiDark(at(*image, 480, 200)));  // below it, the scene
 }
 
+// File > Open lists a folder's subfolders and model files (the script's `browse` opens the dialog
+// as the menu does): the dialog is drawn over the model, the folder's entries in it.
+TEST_F(ViewerWindowTest, TheOpenDialogListsAFolder) {
+  const std::string folder = std::string(CETVIEW_OCC_DATA) + "/occ";
+  if (access(folder.c_str(), R_OK) != 0) GTEST_SKIP() << folder << " is missing (Debian: occt-misc)";
+  const std::string script = writeScript("browse.script",
+                                         "panel tessellation off\n"
+                                         "panel progress off\n"
+                                         "panel display off\n"
+                                         "panel model off\n"
+                                         "panel stats off\n"
+                                         "wait level target\n"
+                                         "browse " +
+                                             folder +
+                                             "\n"
+                                             "wait frames 3\n"
+                                             "quit\n");
+  const std::string shot = outputPath("browse.png");
+  std::remove(shot.c_str());
+  std::string log;
+  ASSERT_EQ(runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
+                          " --screenshot " + shot,
+                      log),
+            0)
+      << log;
+  auto image = engine::readPng(shot);
+  ASSERT_TRUE(image.ok()) << image.error().message;
+  // The dialog (620x440, centred) covers the model with ImGui's dark panel (the side panels are
+  // off: without the dialog, under a tenth of this region is dark, the model's edge lines).
+  int dark = 0, all = 0;
+  for (std::uint32_t y = 150; y < 460; y += 2)
+    for (std::uint32_t x = 180; x < 780; x += 2, ++all) dark += imguiDark(at(*image, x, y));
+  EXPECT_GT(dark, all * 7 / 10) << dark << " of " << all;
+  // The listing: light text on more than twelve rows of 17 pixels (the folder has 40 entries).
+  int textRows = 0;
+  for (std::uint32_t y = 150; y < 460; y += 17) {
+    bool text = false;
+    for (std::uint32_t x = 186; x < 400 && !text; ++x) {
+      const Pixel p = at(*image, x, y + 8);
+      text = p.r > 150 && p.g > 150 && p.b > 150;
+    }
+    textRows += text;
+  }
+  EXPECT_GT(textRows, 12);
+}
+
 // Once the model is shown and nothing moves, the viewer stops drawing (redraw on change): over two
 // still seconds it draws a few settling frames, where drawing every pass would draw a hundred or more.
 TEST_F(ViewerWindowTest, StillModelIsNotRedrawn) {
