@@ -46,25 +46,30 @@ std::optional<std::string> OpenDialog::draw() {
   if (listing_.error.empty() && listing_.entries.empty())
     ImGui::TextDisabled("no model files or folders here");
   const float sizeColumn = ImGui::GetWindowContentRegionMax().x - 90.0f;
-  for (int i = 0; i < static_cast<int>(listing_.entries.size()); ++i) {
-    const BrowserEntry& e = listing_.entries[static_cast<std::size_t>(i)];
-    const std::string full = (fs::path(listing_.directory) / e.name).string();
-    const std::string label = e.directory ? e.name + "/" : e.name;
-    ImGui::PushID(i);
-    if (ImGui::Selectable(label.c_str(), selected_ == i, ImGuiSelectableFlags_AllowDoubleClick)) {
-      selected_ = i;
-      if (e.directory) {
-        if (ImGui::IsMouseDoubleClicked(0)) enter = full;
-      } else {
-        copyPath(path_, sizeof path_, full);
-        if (ImGui::IsMouseDoubleClicked(0)) chosen = full;
+  // Only the rows in view are laid out: a folder may hold thousands of files.
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(listing_.entries.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const BrowserEntry& e = listing_.entries[static_cast<std::size_t>(i)];
+      const std::string full = (fs::path(listing_.directory) / e.name).string();
+      const std::string label = e.directory ? e.name + "/" : e.name;
+      ImGui::PushID(i);
+      if (ImGui::Selectable(label.c_str(), selected_ == i, ImGuiSelectableFlags_AllowDoubleClick)) {
+        selected_ = i;
+        if (e.directory) {
+          if (ImGui::IsMouseDoubleClicked(0)) enter = full;
+        } else {
+          copyPath(path_, sizeof path_, full);
+          if (ImGui::IsMouseDoubleClicked(0)) chosen = full;
+        }
       }
+      if (!e.directory) {
+        ImGui::SameLine(sizeColumn);
+        ImGui::TextDisabled("%s", humanBytes(e.bytes).c_str());
+      }
+      ImGui::PopID();
     }
-    if (!e.directory) {
-      ImGui::SameLine(sizeColumn);
-      ImGui::TextDisabled("%s", humanBytes(e.bytes).c_str());
-    }
-    ImGui::PopID();
   }
   ImGui::EndChild();
   ImGui::SetNextItemWidth(-150.0f);
