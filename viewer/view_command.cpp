@@ -406,6 +406,7 @@ void Viewer::handleInput() {
   }
   if (!io.WantCaptureKeyboard) {
     if (loading_ && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) cancelOpen();
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O, false)) openDialog_.open(browseDirectory());
     if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) camera_.fitAll(aspect, kTransitionSeconds);
     const std::pair<int, engine::StandardView> keys[] = {
         {GLFW_KEY_0, engine::StandardView::kIso},   {GLFW_KEY_1, engine::StandardView::kFront},
@@ -443,7 +444,7 @@ void Viewer::drawMenu() {
   const float aspect = vp.y > 0 ? vp.x / vp.y : 1.0f;
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Open...")) openDialog_.open(browseDirectory());
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) openDialog_.open(browseDirectory());
     if (ImGui::MenuItem("Open demo part")) pendingOpen_ = "demo";
     if (ImGui::MenuItem("Screenshot", "F12")) pendingScreenshot_ = screenshotName();
     ImGui::Separator();
