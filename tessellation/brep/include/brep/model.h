@@ -106,9 +106,10 @@ struct LoadResult {
 
 // Progress and cancellation of a load (a large STEP file takes seconds to minutes).
 struct LoadControl {
-  // Called on the loading thread with the phase ("reading", "transferring", "indexing faces")
-  // and the fraction of the whole load done, in [0, 1], rising. The reading of a STEP or IGES
-  // file (OpenCASCADE's parser) reports only its start.
+  // Called on the loading thread with the phase ("reading", "transferring" (STEP and IGES),
+  // "indexing faces"; "building the demo part" for the demo) and the fraction of the whole load
+  // done, in [0, 1], rising. The reading of a STEP or IGES file (OpenCASCADE's parser) reports
+  // only its start.
   std::function<void(const char* phase, double fraction)> progress;
   // Raised (from any thread), the load stops at its next check: between OpenCASCADE's transfer
   // steps, between faces, and after the parser, which cannot be stopped inside.
