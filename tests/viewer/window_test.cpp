@@ -67,6 +67,22 @@ int runViewer(const std::string& args, std::string& log, std::string* err = null
   return code;
 }
 
+// Runs `cetview ARGS --screenshot OUTPUT/NAME` (a stale picture removed first): the exit code goes
+// to `code`, the output to `log`; returns the picture read back (an error when there is none).
+engine::Result<engine::RgbaImage> runForScreenshot(const std::string& args, const std::string& name,
+                                                   std::string& log, int& code) {
+  const std::string shot = outputPath(name);
+  std::remove(shot.c_str());
+  code = runViewer(args + " --screenshot " + shot, log);
+  return engine::readPng(shot);
+}
+
+// The occt-misc sample at `relative` under its data folder, or empty when it is not installed.
+std::string occData(const std::string& relative) {
+  const std::string path = std::string(CETVIEW_OCC_DATA) + "/" + relative;
+  return access(path.c_str(), R_OK) == 0 ? path : std::string();
+}
+
 struct Pixel {
   int r, g, b;
 };
@@ -130,16 +146,14 @@ TEST_F(ViewerWindowTest, DemoWithPanelsSliderMovesAndIsValidationClean) {
                                          "deflection 0.05%\n"
                                          "wait level target\n"
                                          "quit\n");
-  const std::string shot = outputPath("demo.png");
-  std::remove(shot.c_str());
   std::string log;
-  const int rc = runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " +
-                               script + " --screenshot " + shot,
-                           log);
+  int rc = -1;
+  auto image =
+      runForScreenshot("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script,
+                       "demo.png", log, rc);
   ASSERT_EQ(rc, 0) << log;
   expectWholeLevelShown(log);
   EXPECT_EQ(jsonNumber(log, "target_level"), 5) << log;  // 0.05% of the demo's diagonal
-  auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   ASSERT_EQ(image->width, 960u);
   ASSERT_EQ(image->height, 600u);
@@ -155,8 +169,8 @@ TEST_F(ViewerWindowTest, DemoWithPanelsSliderMovesAndIsValidationClean) {
 }
 
 TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
-  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/bottle.brep";
-  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string model = occData("occ/bottle.brep");
+  if (model.empty()) GTEST_SKIP() << "occ/bottle.brep is missing (Debian: occt-misc)";
   const std::string script = writeScript("bottle.script",
                                          "wait level target\n"
                                          "deflection 0.3%\n"
@@ -169,15 +183,13 @@ TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
                                          "panel progress off\n"
                                          "wait frames 2\n"
                                          "quit\n");
-  const std::string shot = outputPath("bottle.png");
-  std::remove(shot.c_str());
   std::string log;
-  const int rc = runViewer(model + " --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
-                               " --screenshot " + shot,
-                           log);  // no `view`: the default subcommand
+  int rc = -1;
+  auto image =
+      runForScreenshot(model + " --size 960x600 --validate --frames 3000 --threads 2 --script " + script,
+                       "bottle.png", log, rc);  // no `view`: the default subcommand
   ASSERT_EQ(rc, 0) << log;
   expectWholeLevelShown(log);
-  auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   int coloured = 0;
   EXPECT_GT(modelCoverage(*image, &coloured), 0.15);
@@ -187,8 +199,8 @@ TEST_F(ViewerWindowTest, OccModelHeatMapViewsAndPanelToggle) {
 }
 
 TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
-  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Pump_Nut.brep";
-  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string model = occData("occ/Pump_Nut.brep");
+  if (model.empty()) GTEST_SKIP() << "occ/Pump_Nut.brep is missing (Debian: occt-misc)";
   const std::string script = writeScript("open.script",
                                          "wait level 0\n"
                                          "open " +
@@ -207,8 +219,8 @@ TEST_F(ViewerWindowTest, ScriptOpensAnotherModel) {
 // A file loads on a thread of its own while the window goes on: a load cancelled right after it
 // started leaves the current model shown, and the file is never opened.
 TEST_F(ViewerWindowTest, ScriptCancelsALoadAndTheCurrentModelStays) {
-  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Bottom.brep";
-  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string model = occData("occ/Bottom.brep");
+  if (model.empty()) GTEST_SKIP() << "occ/Bottom.brep is missing (Debian: occt-misc)";
   const std::string script = writeScript("cancel.script",
                                          "wait level target\n"
                                          "open " +
@@ -247,8 +259,8 @@ TEST_F(ViewerWindowTest, WithTheFirstLoadCancelledTheWindowGoesOnWithoutAModel) 
 // While a file loads, the window draws the current model and a Loading panel (top centre) with
 // the file's progress; quitting then ends the load.
 TEST_F(ViewerWindowTest, TheLoadingPanelShowsWhileAFileLoads) {
-  const std::string model = std::string(CETVIEW_OCC_DATA) + "/occ/Bottom.brep";
-  if (access(model.c_str(), R_OK) != 0) GTEST_SKIP() << model << " is missing (Debian: occt-misc)";
+  const std::string model = occData("occ/Bottom.brep");
+  if (model.empty()) GTEST_SKIP() << "occ/Bottom.brep is missing (Debian: occt-misc)";
   const std::string script = writeScript("loading.script",
                                          "panel tessellation off\n"
                                          "panel display off\n"
@@ -257,16 +269,13 @@ TEST_F(ViewerWindowTest, TheLoadingPanelShowsWhileAFileLoads) {
                                              model +
                                              "\n"
                                              "quit\n");  // in the frame the load starts
-  const std::string shot = outputPath("loading.png");
-  std::remove(shot.c_str());
   std::string log;
-  ASSERT_EQ(runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
-                          " --screenshot " + shot,
-                      log),
-            0)
-      << log;
+  int rc = -1;
+  auto image =
+      runForScreenshot("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script,
+                       "loading.png", log, rc);
+  ASSERT_EQ(rc, 0) << log;
   EXPECT_EQ(log.find("opened: " + model), std::string::npos) << log;
-  auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   EXPECT_GT(modelCoverage(*image), 0.1);          // the demo, still shown
   EXPECT_TRUE(imguiDark(at(*image, 600, 110)));   // the Loading panel, top centre, beside its button
@@ -277,8 +286,8 @@ TEST_F(ViewerWindowTest, TheLoadingPanelShowsWhileAFileLoads) {
 // File > Open lists a folder's subfolders and model files (the script's `browse` opens the dialog
 // as the menu does): the dialog is drawn over the model, the folder's entries in it.
 TEST_F(ViewerWindowTest, TheOpenDialogListsAFolder) {
-  const std::string folder = std::string(CETVIEW_OCC_DATA) + "/occ";
-  if (access(folder.c_str(), R_OK) != 0) GTEST_SKIP() << folder << " is missing (Debian: occt-misc)";
+  const std::string folder = occData("occ");
+  if (folder.empty()) GTEST_SKIP() << "occ/ is missing (Debian: occt-misc)";
   const std::string script = writeScript("browse.script",
                                          "panel tessellation off\n"
                                          "panel progress off\n"
@@ -291,15 +300,12 @@ TEST_F(ViewerWindowTest, TheOpenDialogListsAFolder) {
                                              "\n"
                                              "wait frames 3\n"
                                              "quit\n");
-  const std::string shot = outputPath("browse.png");
-  std::remove(shot.c_str());
   std::string log;
-  ASSERT_EQ(runViewer("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script +
-                          " --screenshot " + shot,
-                      log),
-            0)
-      << log;
-  auto image = engine::readPng(shot);
+  int rc = -1;
+  auto image =
+      runForScreenshot("view demo --size 960x600 --validate --frames 3000 --threads 2 --script " + script,
+                       "browse.png", log, rc);
+  ASSERT_EQ(rc, 0) << log;
   ASSERT_TRUE(image.ok()) << image.error().message;
   // The dialog (620x440, centred) covers the model with ImGui's dark panel (the side panels are
   // off: without the dialog, under a tenth of this region is dark, the model's edge lines).
@@ -338,17 +344,15 @@ TEST_F(ViewerWindowTest, StillModelIsNotRedrawn) {
 // model shows.
 TEST_F(ViewerWindowTest, BadFaceIsReportedAndTheRestShows) {
   const std::string script = writeScript("badface.script", "wait level target\nwait frames 2\nquit\n");
-  const std::string shot = outputPath("badface.png");
-  std::remove(shot.c_str());
   std::string log;
-  const int rc = runViewer(std::string(CETVIEW_HARDENING_CORPUS) +
-                               "/self_intersecting_wire.brep --size 960x600 --validate --frames 3000 --script " +
-                               script + " --screenshot " + shot,
-                           log);
+  int rc = -1;
+  auto image = runForScreenshot(
+      std::string(CETVIEW_HARDENING_CORPUS) +
+          "/self_intersecting_wire.brep --size 960x600 --validate --frames 3000 --script " + script,
+      "badface.png", log, rc);
   ASSERT_EQ(rc, 0) << log;
   EXPECT_NE(log.find("cetview view: face 7: empty: boundary crosses itself in UV"), std::string::npos) << log;
   expectWholeLevelShown(log);
-  auto image = engine::readPng(shot);
   ASSERT_TRUE(image.ok()) << image.error().message;
   EXPECT_GT(modelCoverage(*image), 0.05);
 }
