@@ -105,7 +105,7 @@ class CetMesh {
   TriangleId nextAround(TriangleId t, VertexId v) const;
   TriangleId prevAround(TriangleId t, VertexId v) const;
   // The edge from a to b, as the triangle in which it runs a -> b counter-clockwise; found by
-  // turning around a. kNoTriangle if a and b are not adjacent.
+  // turning around a and b at once. kNoTriangle if a and b are not adjacent.
   EdgeRef findEdge(VertexId a, VertexId b) const;
 
   // ---- Modification ----

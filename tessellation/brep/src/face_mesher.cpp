@@ -1359,6 +1359,19 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   return indices;
 }
 
+// Each repair once, in the order first made: a domain rebuilt on a later level repeats the repairs
+// its wires needed ("inner wire ran counter-clockwise in UV; reversed" nine times on a fuzzed face).
+std::string FaceMesher::repairsReason() const {
+  std::string reason;
+  for (std::size_t i = 0; i < repairs_.size(); ++i) {
+    if (std::find(repairs_.begin(), repairs_.begin() + static_cast<std::ptrdiff_t>(i), repairs_[i]) !=
+        repairs_.begin() + static_cast<std::ptrdiff_t>(i))
+      continue;
+    reason += (reason.empty() ? "" : "; ") + repairs_[i];
+  }
+  return reason;
+}
+
 FaceStatus FaceMesher::leaveEmpty(const std::string& why, FaceMesh& mesh, FaceReport& report) {
   cdt_.reset();
   records_.clear();
@@ -1380,7 +1393,10 @@ FaceStatus FaceMesher::useFallback(std::string why, FaceMesh& mesh, FaceReport& 
   // A deferred coarse level has made the fallback mesh already (at the same tolerances): BRepMesh
   // can take seconds on a face whose boundary crosses itself.
   bool ok = true;
-  if (deferredIndices_.empty()) {
+  if (!deferredFailure_.empty()) {
+    ok = false;
+    failure = deferredFailure_;
+  } else if (deferredIndices_.empty()) {
     const FallbackResult result = fallbackJob_.run(topology_.face, settings_.reversed, settings_.finalChordal,
                                                    settings_.finalAngle, mesh, indices, failure, cancel);
     if (result == FallbackResult::kCancelled) {
@@ -1418,7 +1434,8 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
     }
     pendingDefer_.clear();
     if (result == FallbackResult::kFailed) {
-      return useFallback(why + "; fallback failed too: " + failure, mesh, report, cancel);
+      deferredFailure_ = failure;  // useFallback() says so once, without running BRepMesh again
+      return useFallback(why, mesh, report, cancel);
     }
   }
   repairs_.push_back("level " + std::to_string(k) + " shows the fallback mesh: " + why);
@@ -1426,8 +1443,7 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
   mesh.levels.push_back(deferredIndices_);
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
   report.status = FaceStatus::kRepaired;
-  report.reason.clear();
-  for (const std::string& r : repairs_) report.reason += (report.reason.empty() ? "" : "; ") + r;
+  report.reason = repairsReason();
   return report.status;
 }
 
@@ -1489,8 +1505,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
   mesh.levels.push_back(std::move(indices));
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
   report.status = repaired_ ? FaceStatus::kRepaired : FaceStatus::kOk;
-  report.reason.clear();
-  for (const std::string& r : repairs_) report.reason += (report.reason.empty() ? "" : "; ") + r;
+  report.reason = repairsReason();
   return report.status;
 }
 

@@ -107,6 +107,7 @@ class FaceMesher {
                         const std::atomic<bool>* cancel);
   std::vector<std::uint32_t> deferredIndices_;  // the fallback mesh shown by deferred coarse levels
   std::string pendingDefer_;                    // why, when making deferredIndices_ was cancelled
+  std::string deferredFailure_;                 // why BRepMesh made no deferredIndices_ (it failed)
 
   // Output bookkeeping: vertices the triangulator created since the last sync get their data.
   // Appends the output data of the next triangulator vertex: at (u, v), position p (an edge point)
@@ -233,6 +234,7 @@ class FaceMesher {
   TriangleRecords records_;
   bool repaired_ = false;
   std::vector<std::string> repairs_;
+  std::string repairsReason() const;  // repairs_ joined, each once
   bool fallback_ = false;
   bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely
   bool exactDeviation_ = false;  // triangles' deviations in closed form, not sampled

@@ -6,7 +6,9 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <BndLib_Add2dCurve.hxx>
 #include <Bnd_Box.hxx>
+#include <Bnd_Box2d.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_BezierCurve.hxx>
@@ -49,6 +51,31 @@ bool boundedByIsoLines(const TopoDS_Face& face, double uRange, double vRange) {
   return true;
 }
 
+// The box of the face's pcurves in (u, v), however far they leave the surface's range (BRepTools::
+// UVBounds cuts them to it): each curve's hull, tightened (BndLib_Add2dCurve::AddOptimal, slow:
+// bug33398's 54 faces reaching 3e-4 of their range past it took it from 35 to 68 ms on one thread)
+// only where it leaves `within`. False when a pcurve is missing.
+bool pcurveReach(const TopoDS_Face& face, const Bnd_Box2d& within, Bnd_Box2d& reach) {
+  for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    double first = 0, last = 0;
+    Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+    if (pcurve.IsNull()) return false;
+    Geom2dAdaptor_Curve curve(pcurve, first, last);
+    std::vector<gp_Pnt2d> hull;
+    if (hullPoints(curve, first, last, hull)) {
+      bool inside = true;
+      for (const gp_Pnt2d& p : hull) inside = inside && !within.IsOut(p);
+      if (inside) {
+        for (const gp_Pnt2d& p : hull) reach.Add(p);
+        continue;
+      }
+    }
+    BndLib_Add2dCurve::AddOptimal(pcurve, first, last, 0.0, reach);
+  }
+  return true;
+}
+
 }  // namespace
 
 SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRad)
@@ -67,6 +94,31 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   BRepTools::UVBounds(face, uMin, uMax, vMin, vMax);
   if (!(uMax >= uMin) || !(vMax >= vMin) || !std::isfinite(uMin) || !std::isfinite(vMax)) {
     uMin = std::max(su0_, -1e6), uMax = std::min(su1_, 1e6), vMin = std::max(sv0_, -1e6), vMax = std::min(sv1_, 1e6);
+  }
+  reachU0_ = uMin, reachU1_ = uMax, reachV0_ = vMin, reachV1_ = vMax;
+  if (direct_) {
+    try {
+      // Only a reach past kReachMargin of an end span is told apart (buildAxis).
+      const Handle(Geom_BSplineSurface) bs = surface_.Surface().BSpline();
+      auto margin = [](const Handle(Geom_BSplineSurface) & b, bool uDir, bool first) {
+        const int n = uDir ? b->NbUKnots() : b->NbVKnots();
+        const double k0 = uDir ? b->UKnot(first ? 1 : n) : b->VKnot(first ? 1 : n);
+        const double k1 = uDir ? b->UKnot(first ? 2 : n - 1) : b->VKnot(first ? 2 : n - 1);
+        return kReachMargin * std::abs(k1 - k0);
+      };
+      Bnd_Box2d within, reach;
+      within.Update(uPeriodic_ ? -1e300 : su0_ - margin(bs, true, true),
+                    vPeriodic_ ? -1e300 : sv0_ - margin(bs, false, true),
+                    uPeriodic_ ? 1e300 : su1_ + margin(bs, true, false),
+                    vPeriodic_ ? 1e300 : sv1_ + margin(bs, false, false));
+      if (pcurveReach(face, within, reach) && !reach.IsVoid()) {
+        double a = 0, b = 0, c = 0, d = 0;
+        reach.Get(a, b, c, d);
+        reachU0_ = std::min(a, uMin), reachV0_ = std::min(b, vMin), reachU1_ = std::max(c, uMax),
+        reachV1_ = std::max(d, vMax);
+      }
+    } catch (const Standard_Failure&) {
+    }
   }
   findDegenerateRows();
   u0 = uMin, v0 = vMin;
@@ -220,9 +272,16 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   if (surface_.GetType() != GeomAbs_BSplineSurface) return;
   const Handle(Geom_BSplineSurface) bs = surface_.Surface().BSpline();  // unlocated: no copy (knots only)
   const int n = uDir ? bs->NbUKnots() : bs->NbVKnots();
-  if (n < 3 || n > 2049) return;  // one span, or more than are worth sampling
+  if (n < 2 || n > 2049) return;  // more spans than are worth sampling
   std::vector<double> knots(static_cast<std::size_t>(n));
   for (int i = 1; i <= n; ++i) knots[std::size_t(i - 1)] = uDir ? bs->UKnot(i) : bs->VKnot(i);
+  const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
+  const double reachLow = uDir ? reachU0_ : reachV0_, reachHigh = uDir ? reachU1_ : reachV1_;
+  const double firstSpan = knots[1] - knots[0],
+               lastSpan = knots[std::size_t(n) - 1] - knots[std::size_t(n) - 2];
+  const bool before = !periodic && reachLow < knots.front() - kReachMargin * firstSpan;
+  const bool after = !periodic && reachHigh > knots.back() + kReachMargin * lastSpan;
+  if (n < 3 && !before && !after) return;  // one span: one scale
   // Mean 3D speed of each span the face covers, sampled across the face's extent in the other
   // direction; those spans decide whether one scale will do. The spans it does not cover (a face
   // trimmed from a large surface: most of them) are not sampled and take the mean speed: no point of
@@ -230,9 +289,40 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   // direction samples every span, as its period in x depends on all of them.
   const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
   const double from = uDir ? uMin : vMin, to = uDir ? uMax : vMax;
-  const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
   std::vector<double> slope(knots.size() - 1, std::numeric_limits<double>::quiet_NaN());
   double smin = 1e300, smax = 0;
+  // Past the knots (kReachBands): the bands' ends, from the reach to the end knot, and the 3D
+  // length of their chords over their width, the mean over five lines across the face.
+  auto bands = [&](double end, double far, std::vector<double>& t, std::vector<double>& s) {
+    const double width = std::abs(far - end), finest = 1e-3 * (far < end ? firstSpan : lastSpan);
+    const double side = far < end ? -1.0 : 1.0;
+    t.push_back(far);
+    for (int j = 1; j < kReachBands && width * std::ldexp(1.0, -j) > finest; ++j)
+      t.push_back(end + side * width * std::ldexp(1.0, -j));
+    t.push_back(end);
+    for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+      double sum = 0;
+      for (int j = 0; j < 5; ++j) {
+        const double w = lo + (hi - lo) * (j + 0.5) / 5;
+        gp_Pnt a, b;
+        gp_Vec du, dv;
+        if (uDir) {
+          d1(t[k], w, a, du, dv), d1(t[k + 1], w, b, du, dv);
+        } else {
+          d1(w, t[k], a, du, dv), d1(w, t[k + 1], b, du, dv);
+        }
+        sum += a.Distance(b);
+      }
+      s.push_back(sum / 5 / std::abs(t[k + 1] - t[k]));
+      smin = std::min(smin, s.back()), smax = std::max(smax, s.back());
+    }
+    if (side < 0) return;  // increasing already
+    std::reverse(t.begin(), t.end());
+    std::reverse(s.begin(), s.end());
+  };
+  std::vector<double> lowT, lowSlope, highT, highSlope;
+  if (before) bands(knots.front(), reachLow, lowT, lowSlope);
+  if (after) bands(knots.back(), reachHigh, highT, highSlope);
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
     const bool covered = knots[k + 1] > from && knots[k] < to;
     if (!covered && !periodic) continue;
@@ -257,6 +347,16 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   // A span without extent (its poles on one point) still needs some room in x.
   const double mean = uDir ? su : sv;
   for (double& s : slope) s = std::isfinite(s) ? std::max(s, 1e-3 * mean) : mean;
+  for (auto* band : {&lowSlope, &highSlope})
+    for (double& s : *band) s = std::isfinite(s) ? std::max(s, 1e-3 * mean) : mean;
+  if (!lowT.empty()) {
+    knots.insert(knots.begin(), lowT.begin(), lowT.end() - 1);
+    slope.insert(slope.begin(), lowSlope.begin(), lowSlope.end());
+  }
+  if (!highT.empty()) {
+    knots.insert(knots.end(), highT.begin() + 1, highT.end());
+    slope.insert(slope.end(), highSlope.begin(), highSlope.end());
+  }
   axis.t = knots;
   axis.slope = slope;
   axis.x.assign(1, 0.0);

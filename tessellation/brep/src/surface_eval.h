@@ -174,6 +174,16 @@ class SurfaceEval {
     double inverse(double value) const;
   };
   // Per-span scales of a B-spline direction where its spans' 3D speeds differ by more than 4x.
+  // A face reaching past the surface's knots (its pcurves leave the surface's range) lies there on
+  // OCCT's extension of the end span, which may run at any speed: a rational patch whose first v
+  // span is 1e-6 long extends as a curve (the extension's |Sv| falls from 2.6e4 to 1e-8 within
+  // 0.02 of v), while the end span's scale carried on made the face's 0.24 of v past the knots
+  // 50000 times as tall in the scaled plane as the rest of it. Past the knots, bands halving towards
+  // the end knot (kReachBands at most) each take the 3D length their chords cover.
+  static constexpr int kReachBands = 40;
+  // Past the knots by less than this share of the end span, the extension runs at the span's own
+  // speed (and rounding in the pcurves' boxes reaches 1e-9 past them on sample models).
+  static constexpr double kReachMargin = 0.01;
   void buildAxis(bool uDir, Axis& axis) const;
   // Knots of a B-spline direction (scaled by `axis`) that act as creases although the surface is C1
   // or smoother there: beside a span kSharpKnotSpeedRatio times faster than its neighbour, the
@@ -213,6 +223,8 @@ class SurfaceEval {
   bool uPeriodic_ = false, vPeriodic_ = false;
   bool concurrentSafe_ = false;
   double su0_ = 0, su1_ = 0, sv0_ = 0, sv1_ = 0;  // the surface's own parameter bounds
+  // How far the face's pcurves reach in (u, v), not cut to the surface's range as uMin... are.
+  double reachU0_ = 0, reachU1_ = 0, reachV0_ = 0, reachV1_ = 0;
   double meanLu_ = 0, meanLv_ = 0;                 // mean |Su|, |Sv| over the face
   // The largest |Su x Sv| times the box's (u, v) area against the face's 3D extent squared, below
   // which the surface has no area; and that ratio on the constructor's 5x5 grid (collapsed() looks

@@ -1,11 +1,12 @@
 // CET triangulator against CGAL's Constrained_Delaunay_triangulation_2, side by side in one run:
 // time ratio per case, time per point across sizes, bytes per triangle and per vertex.
-//   cdt_bench [--max N] [--repeat R] [--case random|grid|trimmed]
+//   cdt_bench [--max N] [--repeat R] [--case random|grid|trimmed|fan]
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -60,6 +61,20 @@ double runCgal(const cet::PolyData& d, std::size_t& faces) {
   return ms(start, end);
 }
 
+// n points on a unit circle and its centre: the Delaunay triangulation is the fan from the centre.
+// One constraint, a chord a quarter of the circle long, crosses n / 4 of its spokes: each crossed
+// edge is looked up while the spokes are flipped away (a fuzzed face's boundary crossed 18486).
+cet::PolyData fanCrossedByAChord(std::size_t n) {
+  cet::PolyData d;
+  d.points.push_back({0.0, 0.0});
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    d.points.push_back({std::cos(a), std::sin(a)});
+  }
+  d.segments.push_back({static_cast<std::uint32_t>(1 + n / 4 + 1), 1u});
+  return d;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -73,7 +88,7 @@ int main(int argc, char** argv) {
   }
   std::printf("%-9s %9s %8s %10s %10s %8s %10s %10s %9s %9s\n", "case", "points", "segments", "cet ms", "cgal ms",
               "speedup", "cet ns/pt", "cgal ns/pt", "B/tri", "B/vertex");
-  for (const char* kind : {"random", "grid", "trimmed"}) {
+  for (const char* kind : {"random", "grid", "trimmed", "fan"}) {
     if (!only.empty() && only != kind) continue;
     for (std::size_t n : {10000u, 100000u, 1000000u, 4000000u}) {
       if (n > maxPoints) continue;
@@ -82,6 +97,9 @@ int main(int argc, char** argv) {
         d = cet::generators::randomPoints(n, 1);
       } else if (!std::strcmp(kind, "grid")) {
         d = cet::generators::grid(static_cast<std::size_t>(std::sqrt(static_cast<double>(n))));
+      } else if (!std::strcmp(kind, "fan")) {
+        if (n > 100000) continue;
+        d = fanCrossedByAChord(n);
       } else {
         if (n < 100000) continue;  // ~80k constraint segments need at least that many points
         // 8000-vertex outer loop and 3600 holes of 20 segments: 80k segments, rest interior points.
