@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
+#include <vector>
 
 #include "cet/topology_check.h"
 #include "cet/triangulator.h"
@@ -64,6 +66,59 @@ TEST(CetMesh, RetrievalOperators) {
   EXPECT_EQ(e.t, s.lower);
   EXPECT_EQ(e.i, 1);
   EXPECT_EQ(s.m.findEdge(1, 3).t, kNoTriangle);
+}
+
+// findEdge turns around both ends at once (a segment through a fan looks its crossed edges up
+// from the hub's far ends): every ordered pair of vertices of a fan of 64 spokes and of a random
+// triangulation gets the directed edge between them, found from either end, or none.
+TEST(CetMesh, FindEdgeAnswersEveryOrderedPairFromEitherEnd) {
+  for (const bool fan : {true, false}) {
+    SCOPED_TRACE(fan ? "fan" : "random");
+    std::vector<Point2> points;
+    if (fan) {
+      points.push_back({0, 0});
+      for (int i = 0; i < 64; ++i) points.push_back({std::cos(i * M_PI / 32), std::sin(i * M_PI / 32)});
+    } else {
+      unsigned state = 12345;
+      for (int i = 0; i < 60; ++i) {
+        state = state * 1103515245u + 12345u;
+        const double x = (state >> 8) % 10007 / 10007.0;
+        state = state * 1103515245u + 12345u;
+        points.push_back({x, (state >> 8) % 10009 / 10009.0});
+      }
+    }
+    Triangulator tri;
+    tri.addVertices(points.data(), points.size());
+    ASSERT_TRUE(tri.insertPending());
+    const CetMesh& m = tri.mesh();
+    // (origin, destination) of every edge between two vertices: a hull edge runs outwards in its
+    // ghost triangle.
+    std::set<std::pair<VertexId, VertexId>> directed;
+    for (TriangleId t = 0; t < m.triangleCount(); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const VertexId a = m.edgeOrigin(EdgeRef{t, i}), b = m.edgeDestination(EdgeRef{t, i});
+        if (a != kInfiniteVertex && b != kInfiniteVertex) directed.insert({a, b});
+      }
+    }
+    if (fan) {  // the centre's 64 spokes, each way
+      EXPECT_EQ(std::count_if(directed.begin(), directed.end(), [](auto e) { return e.first == 0; }), 64);
+      EXPECT_EQ(std::count_if(directed.begin(), directed.end(), [](auto e) { return e.second == 0; }), 64);
+    }
+    const auto n = static_cast<VertexId>(points.size());
+    for (VertexId a = 0; a < n; ++a) {
+      for (VertexId b = 0; b < n; ++b) {
+        if (a == b) continue;
+        const EdgeRef e = m.findEdge(a, b);
+        if (directed.count({a, b})) {
+          ASSERT_NE(e.t, kNoTriangle) << a << " -> " << b;
+          EXPECT_EQ(m.edgeOrigin(e), a);
+          EXPECT_EQ(m.edgeDestination(e), b);
+        } else {
+          EXPECT_EQ(e.t, kNoTriangle) << a << " -> " << b;
+        }
+      }
+    }
+  }
 }
 
 TEST(CetMesh, TraversalAroundVertexVisitsItsStarInOrder) {
