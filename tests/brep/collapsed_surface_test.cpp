@@ -193,6 +193,31 @@ TEST(CollapsedSurface, AFaceOnTheExtensionOfATinyEndSpanIsMeshedWithinItsToleran
   EXPECT_LE(levels.back().degenerate, 100u) << "914k with the end span's scale past the knot";
 }
 
+// half_collapsed_wavy_sheet.brep (fuzz seed 404 input 240) is a B-spline, linear in u, whose last
+// five of eight columns of poles are one point: it collapses onto that point over more than half of
+// u and turns wildly beside it.
+// - At 1.5% and 10 degrees its last level kept triangles 1.87x its tolerance (at face_fuzz's 0.22%,
+//   112 triangles up to 6.2x, the face reported ok): the angle split them, so their chordal
+//   samples were never taken, and each angle split was dropped, its point not clear of the chords.
+//   Such a triangle is now measured and, if too far, split at its worst sample whatever the chords.
+// - At 3% and 5 degrees two repairing flips undid each other pass after pass (the triangles' flip
+//   rules disagree on a triangle in line with a pole corner) until the pass bound ended the level.
+//   A flip no longer restores a diagonal this level's flips took away, and a level that reaches the
+//   pass bound says so.
+TEST(CollapsedSurface, ATriangleWhoseAngleSplitIsDroppedIsStillHeldToTheTolerance) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("half_collapsed_wavy_sheet.brep", test::relative(0.015, 10));
+  ASSERT_FALSE(levels.empty());
+}
+
+TEST(CollapsedSurface, RepairingFlipsDoNotUndoEachOther) {
+  auto model = test::loadTestData("half_collapsed_wavy_sheet.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.03, 5.0453192950331882));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).reason.find("refinement stopped"), std::string::npos) << t->report(0).reason;
+}
+
 // A plane strip 100 long and 1e-6 wide (area 1e-8 of its extent squared, a hundred times the bar)
 // has area: it is meshed, not reported empty.
 TEST(CollapsedSurface, AStripAMillionthOfItsLengthWideIsMeshed) {

@@ -10,8 +10,11 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "brep/tessellator.h"
@@ -165,7 +168,29 @@ class FaceMesher {
   // it for flipped triangles longer than the level's tolerance only, those split whatever the
   // chords' clearance: for smaller ones the changed meshes left more triangles flipped across folds
   // on A319's wing tips (14 on the final level instead of 10) and one on trj4.
+  // Nor does it flip a quadrilateral that this level has flipped kMaxQuadFlips times already: where
+  // the triangles' rules disagree (a triangle with a pole corner in line with the others is flipped
+  // to refine() but not to facing()), two flips undid each other pass after pass and kept the splits
+  // beside them waiting to the pass bound (a fuzzed face: 3700 passes of the same two flips, the
+  // level left 6.2x over). Refusing the first flip back already, or making facing() agree, changed
+  // far more fuzzed faces, for the worse on most (a face from 136k triangles to 501k).
   int repairingFlip(cet::TriangleId t, const FaceMesh& mesh) const;
+  static constexpr int kMaxQuadFlips = 4;
+  struct QuadKeyHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
+      return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ull ^ k.second);
+    }
+  };
+  // Flips of each quadrilateral this level, keyed by its two diagonals (vertex pairs, in order).
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, QuadKeyHash> quadFlips_;
+  static std::uint64_t pairKey(cet::VertexId a, cet::VertexId b) {
+    return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+  }
+  static std::pair<std::uint64_t, std::uint64_t> quadKey(cet::VertexId a0, cet::VertexId a1, cet::VertexId b0,
+                                                         cet::VertexId b1) {
+    const std::uint64_t x = pairKey(a0, a1), y = pairKey(b0, b1);
+    return x < y ? std::make_pair(x, y) : std::make_pair(y, x);
+  }
   // Whether t, with one corner at a pole, has each other corner at the far end of a boundary chord
   // from that pole or beside it where the side bulges out beyond the chord, no further in from the
   // chord than the side is out at the same fraction of it (or itself beyond). A triangle on the
