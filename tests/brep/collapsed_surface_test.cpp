@@ -180,7 +180,7 @@ INSTANTIATE_TEST_SUITE_P(FuzzedFaces, CollapsedOntoACurve,
 // extension_past_a_tiny_span.brep is a rational B-spline whose first v span is 1e-6 long (the next
 // one 1) and whose face reaches 0.24 of v below its knots, onto OCCT's extension of that span. The
 // extension runs at |Sv| 2.6e4 at the knot and 1e-8 0.02 further out: it collapses onto a curve.
-// Scaled with the tiny span's speed carried on past the knot, the face's part there stood 50000
+// Scaled with the tiny span's speed carried on past the knot, the face's part there stood 100000
 // times as tall in the scaled plane as the rest of it, and refinement never reached the tolerance:
 // 1.04 million triangles (914k of no area) in 4.4 s at 0.1%, stopped by the point bound on level 2
 // at 2.6x the tolerance (BRepMesh: 37 triangles, 24x over it). Bands past the knots scaled by their

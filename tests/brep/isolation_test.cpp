@@ -142,7 +142,7 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 // the centre) fails in CET on every level and in BRepMesh too: its reason said "fallback failed
 // too" twice (BRepMesh ran again for the final level after failing for the coarse ones).
 // crossing_boundary.brep's face 1, rebuilt on every level, said "inner wire ran counter-clockwise
-// in UV; reversed" nine times.
+// in UV; reversed" 24 times.
 TEST(Isolation, AFaceReasonNamesEachRepairAndFailureOnce) {
   const TopoDS_Wire bowTie =
       BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 10, 0), gp_Pnt(10, 0, 0), gp_Pnt(0, 10, 0), true)

@@ -1118,9 +1118,9 @@ bool FaceMesher::withinByTheMeasure(cet::TriangleId t, const FaceMesh& mesh, con
     uv[2 * i] = c.u[i], uv[2 * i + 1] = c.w[i];
   }
   static const std::uint32_t kIdx[3] = {0, 1, 2};
-  // A triangle the refinement left to the angle is held to the tolerance itself, not to the margin
-  // inside it the refinement aims at: splits of those between the two, overriding the chords, still
-  // cascaded on fuzzed faces (seed 101: 2.01M triangles instead of 1.94M).
+  // A triangle the refinement left to the angle is held to the tolerance itself (the promise), not
+  // to the margin inside it the refinement aims at: its split overrides the chords, so no more of
+  // those than the promise needs.
   const double bound = (r.flags & TriangleRecord::kMeasureChordal) ? reachable / kDeviationMargin : reachable;
   return measureDeviation(eval_, positions, uv, kIdx, 1) <= bound;
 }
@@ -1401,7 +1401,7 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
 }
 
 // Each repair once, in the order first made: a domain rebuilt on a later level repeats the repairs
-// its wires needed ("inner wire ran counter-clockwise in UV; reversed" nine times on a fuzzed face).
+// its wires needed ("inner wire ran counter-clockwise in UV; reversed" 24 times on a fuzzed face).
 std::string FaceMesher::repairsReason() const {
   std::string reason;
   for (std::size_t i = 0; i < repairs_.size(); ++i) {

@@ -178,7 +178,7 @@ class SurfaceEval {
   // OCCT's extension of the end span, which may run at any speed: a rational patch whose first v
   // span is 1e-6 long extends as a curve (the extension's |Sv| falls from 2.6e4 to 1e-8 within
   // 0.02 of v), while the end span's scale carried on made the face's 0.24 of v past the knots
-  // 50000 times as tall in the scaled plane as the rest of it. Past the knots, bands halving towards
+  // 100000 times as tall in the scaled plane as the rest of it. Past the knots, bands halving towards
   // the end knot (kReachBands at most) each take the 3D length their chords cover.
   static constexpr int kReachBands = 40;
   // Past the knots by less than this share of the end span, the extension runs at the span's own
