@@ -213,6 +213,55 @@ TEST(HardCases, AnEdgeSpanFarShorterThanItsSegmentIsSampled) {
   }
 }
 
+// edge_along_a_tiny_span.brep (fuzz seed 606 input 8, as face_fuzz wrote it) is a bicubic B-spline
+// whose last v span is 3.8e-7 of its range of 1 and turns the sheet about 90 degrees within it (its
+// z falls 0.08 across the span): the face's side v = 1 runs along that span. The face mesher scales
+// UV per knot span, so the span is as wide in its plane as in 3D; the edge discretisation stood its
+// trial triangles on the side's chords with one scale for the whole face, so each apex reached far
+// past the span onto the sheet turned away, failed the angle, and the side was halved down to the
+// minimum size on every level: 66517 points on level 6 at 0.0108%, which the face then carried
+// (83744 triangles, 1.12x the level's tolerance; 3.9 s). The trial triangles now stand in the
+// mesher's plane.
+TEST(HardCases, AnEdgeAlongATinySpanIsNotHalvedForTheSurfaceBeyondTheSpan) {
+  auto model = test::loadTestData("edge_along_a_tiny_span.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.00010830618008826698, 21.323338673990996));
+  ASSERT_TRUE(t);
+  ASSERT_GE(t->lastLevel(), 6);
+  std::size_t most = 0;
+  for (EdgeId e = 0; e < model->edgeCount(); ++e) {
+    std::vector<float> xyz;
+    t->edgePolyline(e, t->lastLevel(), xyz);
+    most = std::max(most, xyz.size() / 3);
+  }
+  EXPECT_LE(most, 1000u) << "133033 points on the last level with the face's single scale";
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  EXPECT_LE(levels.back().triangles, 80000u) << "169427 with the face's single scale";
+}
+
+// rational_pyramid.brep (fuzz seed 606 input 267, as face_fuzz wrote it) is a rational B-spline,
+// periodic and of degree 1 in u (three flat sides, weights 0.2 to 2.4) and collapsed onto an apex at
+// the far end of v: a three-sided pyramid 0.03 across. Along its base the refinement's few
+// Gauss-Newton steps stop short of the foot (the speed across the base is 1e-4 of that along it),
+// so one triangle on a base chord read twice the level's tolerance however near the chord its apex
+// came: each centroid split overrode the chord's clearance and put the next apex a third as far
+// from the chord, on and on until the point bound (level 4 at 0.0285%: 501884 triangles, 71973 of
+// no area, 8 s; levels 5 and 6, left with the points of level 4, 1.7x and 3.4x their tolerances),
+// and the face was reported as not reaching its tolerances. A split that breaks the clearance is now decided
+// by the measure, which finds the triangle within the tolerance.
+TEST(HardCases, AReadingThatStaysOverTheToleranceDoesNotMarchSplitsIntoAChord) {
+  auto model = test::loadTestData("rational_pyramid.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.00028475719624698314, 27.141832608529793));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    EXPECT_LE(levels[k].triangles, 10000u) << "level " << k << ": 501884 from level 4 on with the march";
+    EXPECT_EQ(levels[k].degenerate, 0u) << "level " << k << ": 71973 from level 4 on with the march";
+  }
+}
+
 // polyline_vertex_by_its_end.brep (as face_fuzz wrote it): the side v = vmax of a ruled B-spline is a
 // degree-1 curve 2.77 long with a vertex 2e-6 from its end, in the sheet's last u spans, 2e-6 wide.
 // Halving a segment stops 2^24 times below its seed (1.6e-7 here), and the chord kept skipping the

@@ -444,20 +444,33 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         n[k] = du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12 ? gp_Vec(0, 0, 0) : crossOrNone(du, dv);
       }
     };
-    // The segment's chord in face k's UV: its ends, its direction scaled (dx, dy: the face's scaled
-    // UV, where lengths approximate 3D ones) and that length.
+    // The segment's chord in face k's UV: its ends, the same in the face's scaled UV (the face
+    // mesher's plane, where lengths approximate 3D ones: SurfaceEval::scaled), the chord's
+    // direction there (dx, dy) and its length. The scaling is per knot span where a B-spline's
+    // spans run at different speeds: with one scale for the whole face, triangles stood on a chord
+    // along a span 4e-7 wide reached far past it, onto a side of the surface turned 90 degrees
+    // away, and a fuzzed face's edge there was halved to the minimum size (66517 points at 0.01%).
     struct UvChord {
       gp_Pnt2d a, b;
-      double dx = 0, dy = 0, len = 0;
+      double ax = 0, ay = 0, dx = 0, dy = 0, len = 0;
     };
     auto uvChord = [&](std::size_t k, double ta, double tb) {
       const FaceUse& use = info.faces[k];
       UvChord c;
       c.a = use.pcurve->Value(pcurveParameter(info, use, ta));
       c.b = use.pcurve->Value(pcurveParameter(info, use, tb));
-      c.dx = (c.b.X() - c.a.X()) * use.scale.su, c.dy = (c.b.Y() - c.a.Y()) * use.scale.sv;
+      c.ax = use.scale.uAxis.map(c.a.X()), c.ay = use.scale.vAxis.map(c.a.Y());
+      c.dx = use.scale.uAxis.map(c.b.X()) - c.ax, c.dy = use.scale.vAxis.map(c.b.Y()) - c.ay;
       c.len = std::hypot(c.dx, c.dy);
       return c;
+    };
+    // The UV of the point at fraction f of the chord and `height` (scaled units) off it on `side`.
+    auto offChord = [&](std::size_t k, const UvChord& c, double f, double height, int side, double& u,
+                        double& v) {
+      const FaceScale& scale = info.faces[k].scale;
+      const double h = height * side / c.len;
+      u = scale.uAxis.inverse(c.ax + f * c.dx - h * c.dy);
+      v = scale.vAxis.inverse(c.ay + f * c.dy + h * c.dx);
     };
     // Face k's normal (not unit) at (u, v); none (zero) where the surface has no area there, as in
     // normalsAt (a fuzzed face's straight edge beside a patch collapsed onto a segment was halved
@@ -479,27 +492,28 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       return facet.Dot(nSum) <= kFoldCos * facet.Magnitude() * nSum.Magnitude();
     };
     // The perpendicular from the middle of face k's UV chord into the face (side: which way; the
-    // domain on the left of the chord times side), in the face's scaled UV: apex(h) = mid + h * (ru,
-    // rv), and h the largest height inside the face's parameter box up to the tall standing
-    // triangle's. Not inside where the chord lies on the box's side (a seam, whose far side is the
+    // domain on the left of the chord times side), in the face's scaled UV: h the largest height
+    // inside the face's parameter box up to the tall standing triangle's, and (u, v) the point
+    // reached. Not inside where the chord lies on the box's side (a seam, whose far side is the
     // face's other end) or its middle is off the box.
     struct Reach {
-      double mu, mv, ru, rv, h, tall;
+      double u, v, h, tall;  // the point reached (UV), how far (scaled) and the tall triangle's height
       bool inside;
     };
     auto reachInto = [&](std::size_t k, const UvChord& c, int side, double f = 0.5) {
       const FaceScale& scale = info.faces[k].scale;
       Reach r;
-      r.mu = c.a.X() + f * (c.b.X() - c.a.X()), r.mv = c.a.Y() + f * (c.b.Y() - c.a.Y());
-      r.ru = -side * c.dy / c.len / scale.su, r.rv = side * c.dx / c.len / scale.sv;
+      const double mx = c.ax + f * c.dx, my = c.ay + f * c.dy;
+      const double rx = -side * c.dy / c.len, ry = side * c.dx / c.len;
       r.tall = r.h = kStandingHeight * c.len;
       auto limit = [&r](double m, double d, double lo, double hi) {
         if (d > 0) r.h = std::min(r.h, (hi - m) / d);
         if (d < 0) r.h = std::min(r.h, (lo - m) / d);
       };
-      limit(r.mu, r.ru, scale.uMin, scale.uMax);
-      limit(r.mv, r.rv, scale.vMin, scale.vMax);
-      r.inside = r.h > 1e-9 * (std::abs(r.mu) + std::abs(r.mv) + c.len);
+      limit(mx, rx, scale.uAxis.map(scale.uMin), scale.uAxis.map(scale.uMax));
+      limit(my, ry, scale.vAxis.map(scale.vMin), scale.vAxis.map(scale.vMax));
+      r.inside = r.h > 1e-9 * (std::abs(mx) + std::abs(my) + c.len);
+      offChord(k, c, f, r.h, side, r.u, r.v);
       return r;
     };
     // Whether every curved face on the segment stays near its chord (the slender triangles'
@@ -521,11 +535,13 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
           const Reach r = reachInto(k, c, side);
           if (!r.inside) continue;
           gp_Pnt across;
-          normalAt(k, r.mu + r.h * r.ru, r.mv + r.h * r.rv, across);
+          normalAt(k, r.u, r.v, across);
           room = std::min(room, mid.Distance(across));
         }
         gp_Pnt under;
-        normalAt(k, 0.5 * (c.a.X() + c.b.X()), 0.5 * (c.a.Y() + c.b.Y()), under);
+        double mu = 0, mv = 0;
+        offChord(k, c, 0.5, 0, 1, mu, mv);
+        normalAt(k, mu, mv, under);
         if (!(under.Distance(mid) < kSlenderBulge * 2 * room)) return false;
       }
       return true;
@@ -535,9 +551,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     // outside the face's parameter box.
     auto apexAt = [&](std::size_t k, const UvChord& c, double f, double height, int side, double& au, double& av) {
       const FaceScale& scale = info.faces[k].scale;
-      const double h = height * c.len * side;
-      au = c.a.X() + f * (c.b.X() - c.a.X()) - h * c.dy / c.len / scale.su;
-      av = c.a.Y() + f * (c.b.Y() - c.a.Y()) + h * c.dx / c.len / scale.sv;
+      offChord(k, c, f, height * c.len, side, au, av);
       return au >= scale.uMin && au <= scale.uMax && av >= scale.vMin && av <= scale.vMax;
     };
     // How far triangles standing on the segment's UV chord miss the tolerances: the tallest (apex
@@ -595,7 +609,9 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         const double spread = spreadAt(au, av, apex);
         if (height == kStandingHeight) {
           gp_Pnt centroid;
-          const gp_Vec nc = normalAt(k, (c.a.X() + c.b.X() + au) / 3, (c.a.Y() + c.b.Y() + av) / 3, centroid);
+          double cu = 0, cv = 0;  // the centroid: a third of the apex's height over the chord's middle
+          offChord(k, c, 0.5, height * c.len / 3, side, cu, cv);
+          const gp_Vec nc = normalAt(k, cu, cv, centroid);
           if (nc.Magnitude() > 0) {
             const gp_XYZ flat = (pa.XYZ() + pb.XYZ() + apex.XYZ()) / 3;
             worst = std::max(worst, std::abs(gp_Vec(flat, centroid.XYZ()).Dot(nc / nc.Magnitude())) / crit.chordal);
@@ -645,7 +661,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       // other end) or its middle is off the box.
       if (r.h >= 0.75 * r.tall || !r.inside) return false;
       gp_Pnt apex, tmp;
-      const gp_Vec nApex = normalAt(k, r.mu + r.h * r.ru, r.mv + r.h * r.rv, apex);
+      const gp_Vec nApex = normalAt(k, r.u, r.v, apex);
       const gp_Vec na = normalAt(k, c.a.X(), c.a.Y(), tmp), nb = normalAt(k, c.b.X(), c.b.Y(), tmp);
       return folds(pa, pb, apex, na, nb, nApex, side);
     };
@@ -668,7 +684,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       for (double f : {0.25, 0.5, 0.75}) {
         const Reach r = reachInto(k, c, side, f);
         if (!r.inside) continue;
-        const gp_Pnt across = pointOn(k, r.mu + r.h * r.ru, r.mv + r.h * r.rv);
+        const gp_Pnt across = pointOn(k, r.u, r.v);
         if (ab.Crossed(gp_Vec(pa, across)).Dot(n) * side < -kCurlBehind * ab.SquareMagnitude() * n.Magnitude()) return true;
       }
       return false;

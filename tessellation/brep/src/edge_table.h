@@ -16,6 +16,7 @@
 
 #include "brep/tessellator.h"
 #include "bspline_direct.h"
+#include "uv_axis.h"
 #include "worker_pool.h"
 
 namespace cetview::brep {
@@ -37,6 +38,7 @@ class EdgeTable {
   struct FaceScale {
     bool valid = false;          // false: the face has no usable surface and does not guide its edges
     double su = 1, sv = 1;       // the face's UV scaling
+    UvAxis uAxis, vAxis;         // its scaled UV plane, per knot span where spans differ (SurfaceEval)
     double uMin = 0, uMax = 0, vMin = 0, vMax = 0;
     // Tori and free-form surfaces (B-spline, Bezier, offset, swept): beside an edge the surface can
     // bend another way than along it.

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -185,6 +186,27 @@ class FaceMesher {
   };
   // Flips of each quadrilateral this level, keyed by its two diagonals (vertex pairs, in order).
   std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, QuadKeyHash> quadFlips_;
+  // Flips this level that kept each edge (a, b) of the flipped triangle (a, b, c) (pairKey): a
+  // triangle whose corners a and b share a 3D point stays without area whatever its third corner,
+  // and its repairing flips walked around the fan of b, a new quadrilateral each pass, until the
+  // pass bound (a fuzzed face: 3800 passes on a level). At most kMaxPivotFlips per edge: with 8,
+  // flips refused elsewhere left their triangles to splits that cascaded (a fuzzed face's last
+  // level: 76.9k triangles -> 501k, to the point bound).
+  static constexpr int kMaxPivotFlips = 64;
+  std::unordered_map<std::uint64_t, int> pivotFlips_;
+  // Triangles (keyed by their vertices) whose split point this level merged with a vertex or was
+  // rejected by the triangulation: not asked again. Asked again, such a split marked its corners
+  // touched on every pass, so a neighbour waiting for its turn never had it, and the level ended
+  // when no point went in: a fuzzed face kept a triangle 2.04x its level's tolerance so.
+  std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, QuadKeyHash> failedSplits_;
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> splitKeys_;  // of splitTriangles_
+  static std::pair<std::uint64_t, std::uint64_t> triangleKey(cet::VertexId a, cet::VertexId b,
+                                                             cet::VertexId c) {
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    return {std::uint64_t{a} << 32 | b, c};
+  }
   static std::uint64_t pairKey(cet::VertexId a, cet::VertexId b) {
     return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
   }
@@ -213,6 +235,11 @@ class FaceMesher {
   // Whether triangle t, with a corner at a pole and read too far from the surface (r), is within
   // `reachable` by the deviation measure itself (measure_impl.h).
   bool withinByTheMeasure(cet::TriangleId t, const FaceMesh& mesh, const TriangleRecord& r, double reachable) const;
+  // Whether triangle t is within `bound` of the surface by the deviation measure (measure_impl.h);
+  // false where the measure does not apply (a triangle wrapping around a periodic direction).
+  bool measuredWithin(cet::TriangleId t, const FaceMesh& mesh, double bound) const;
+  // measuredWithin's surface, as measureFaces makes it (made on first use, by refine()'s one thread).
+  mutable std::unique_ptr<SurfaceEval> judge_;
   // Moves a split point (u, v) of triangle t onto a sharp knot's line (SurfaceEval::findSharpKnots)
   // that the triangle spans, where that line crosses t (see refine()).
   void ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const;

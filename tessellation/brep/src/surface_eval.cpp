@@ -434,28 +434,6 @@ void SurfaceEval::buildConformalSphereAxes() {
   vAxis_ = merc;
 }
 
-double SurfaceEval::Axis::map(double value) const {
-  if (slope.size() == 1) return (value - t[0]) * slope[0];
-  double shift = 0;
-  if (period > 0) {
-    const double turns = std::floor((value - t.front()) / period);
-    value -= turns * period, shift = turns * periodX;
-  }
-  const auto k = static_cast<std::size_t>(std::upper_bound(t.begin() + 1, t.end() - 1, value) - t.begin() - 1);
-  return shift + x[k] + (value - t[k]) * slope[k];
-}
-
-double SurfaceEval::Axis::inverse(double value) const {
-  if (slope.size() == 1) return t[0] + (value - x[0]) / slope[0];
-  double shift = 0;
-  if (period > 0) {
-    const double turns = std::floor((value - x.front()) / periodX);
-    value -= turns * periodX, shift = turns * period;
-  }
-  const auto k = static_cast<std::size_t>(std::upper_bound(x.begin() + 1, x.end() - 1, value) - x.begin() - 1);
-  return shift + t[k] + (value - x[k]) / slope[k];
-}
-
 bool SurfaceEval::crosses(const std::vector<double>& creases, double period, double a, double b) {
   if (creases.empty() || a == b) return false;
   if (a > b) std::swap(a, b);

@@ -13,9 +13,10 @@
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
-#include "cet/types.h"
 #include "bspline_direct.h"
+#include "cet/types.h"
 #include "elementary_distance.h"
+#include "uv_axis.h"
 
 namespace cetview::brep {
 
@@ -94,6 +95,9 @@ class SurfaceEval {
   double u0 = 0, v0 = 0, su = 1, sv = 1;  // the one scale (the mean over the face) in each direction
   // One scale per direction: straight lines in UV are straight in the scaled plane.
   bool linear() const { return uAxis_.slope.size() == 1 && vAxis_.slope.size() == 1; }
+  // The two directions' scalings (the edge discretisation works in the same plane).
+  const UvAxis& uAxis() const { return uAxis_; }
+  const UvAxis& vAxis() const { return vAxis_; }
   // The UV of the point with weights w[0..n) of the corners (u[i], v[i]) in the scaled plane, where
   // the triangulation's edges are straight (in UV too when linear()).
   void blend(int n, const double* w, const double* u, const double* v, double& ou, double& ov) const {
@@ -165,14 +169,7 @@ class SurfaceEval {
   bool onDegenerateRow(double u, double v) const;
   std::vector<DegenerateRow> degenerateRows_;
 
-  // One direction's scaling: x = x[k] + (t - t[k]) * slope[k] in span k (extended linearly past the
-  // ends, repeated with the period when periodic). One span: x = (t - t[0]) * slope[0].
-  struct Axis {
-    std::vector<double> t, x, slope;
-    double period = 0, periodX = 0;
-    double map(double value) const;
-    double inverse(double value) const;
-  };
+  using Axis = UvAxis;
   // Per-span scales of a B-spline direction where its spans' 3D speeds differ by more than 4x.
   // A face reaching past the surface's knots (its pcurves leave the surface's range) lies there on
   // OCCT's extension of the end span, which may run at any speed: a rational patch whose first v
