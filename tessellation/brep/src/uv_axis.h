@@ -23,7 +23,8 @@ struct UvAxis {
       const double turns = std::floor((value - t.front()) / period);
       value -= turns * period, shift = turns * periodX;
     }
-    const auto k = static_cast<std::size_t>(std::upper_bound(t.begin() + 1, t.end() - 1, value) - t.begin() - 1);
+    const auto k =
+        static_cast<std::size_t>(std::upper_bound(t.begin() + 1, t.end() - 1, value) - t.begin() - 1);
     return shift + x[k] + (value - t[k]) * slope[k];
   }
   double inverse(double value) const {
@@ -33,7 +34,8 @@ struct UvAxis {
       const double turns = std::floor((value - x.front()) / periodX);
       value -= turns * periodX, shift = turns * period;
     }
-    const auto k = static_cast<std::size_t>(std::upper_bound(x.begin() + 1, x.end() - 1, value) - x.begin() - 1);
+    const auto k =
+        static_cast<std::size_t>(std::upper_bound(x.begin() + 1, x.end() - 1, value) - x.begin() - 1);
     return shift + t[k] + (value - x[k]) / slope[k];
   }
 };
