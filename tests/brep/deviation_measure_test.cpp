@@ -8,6 +8,7 @@
 // whose corner sits at a subnormal v) the level's tolerance.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -64,15 +65,16 @@ TopoDS_Face firstFace(const std::string& file) {
   return faces.More() ? TopoDS::Face(faces.Current()) : TopoDS_Face();
 }
 
-// The measure's reading of the triangle with these corner parameters (corners on the surface).
-double measuredTriangle(const SurfaceEval& eval, const double uv[6]) {
+// The measure's reading of the triangle with these corner parameters (corners on the surface),
+// its finer seeds taken past `fineAbove`.
+double measuredTriangle(const SurfaceEval& eval, const double uv[6], double fineAbove = INFINITY) {
   double positions[9];
   for (int i = 0; i < 3; ++i) {
     const gp_Pnt p = eval.point(uv[2 * i], uv[2 * i + 1]);
     positions[3 * i] = p.X(), positions[3 * i + 1] = p.Y(), positions[3 * i + 2] = p.Z();
   }
   const std::uint32_t idx[3] = {0, 1, 2};
-  return measureDeviation(eval, positions, uv, idx, 1);
+  return measureDeviation(eval, positions, uv, idx, 1, fineAbove);
 }
 
 // The same on the first face of a test data file.
@@ -81,6 +83,29 @@ double measuredTriangle(const std::string& file, const double uv[6]) {
   EXPECT_FALSE(face.IsNull()) << file;
   if (face.IsNull()) return 1e300;
   return measuredTriangle(SurfaceEval(face), uv);
+}
+
+// wild_weights_across_a_tiny_span.brep (the CI fuzz seed's input 13) is a rational B-spline,
+// periodic in u, with weights from 0.003 to 901 and a u span 7e-8 wide. A triangle of its level 0
+// at 0.6% (tolerance 3.45e-4) has a corner inside that span, 0.01 from the other two. The measure
+// read it 0.0036 (10.6x) with its corners in one order and 9e-6 in another: the nearest point of
+// its coarse seed grid lay in another basin of the distance, and where the steps went from there
+// hung on rounding. A grid of step 1/400 over its (u, v) finds the surface within 1.75e-4 of every
+// sample. Past the tolerance the measure also seeds from a grid of step 1/64.
+TEST(WildWeights, ATriangleAcrossATinySpanReadsAlikeInEveryCornerOrder) {
+  const TopoDS_Face face = firstFace("wild_weights_across_a_tiny_span.brep");
+  ASSERT_FALSE(face.IsNull());
+  const SurfaceEval eval(face);
+  const double corners[3][2] = {{0.067025128230357112, 96.700662441748761},
+                                {0.066782831553266531, 95.913231052997162},
+                                {0.091386026340667781, 96.154864008305054}};
+  const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  for (const auto& o : orders) {
+    const double uv[6] = {corners[o[0]][0], corners[o[0]][1], corners[o[1]][0],
+                          corners[o[1]][1], corners[o[2]][0], corners[o[2]][1]};
+    EXPECT_LT(measuredTriangle(eval, uv, 3.4453e-4), 1.75e-4)
+        << "order " << o[0] << o[1] << o[2] << ": 0.0036 in two orders";
+  }
 }
 
 TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {

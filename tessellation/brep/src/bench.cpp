@@ -229,9 +229,10 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
         degenerate[f] = countDegenerate(soup);
         try {
           SurfaceEval eval(face);
-          devs[f] = tri->HasUVNodes() ? measureDeviation(eval, soup.positions.data(), uv.data(), soup.indices.data(),
-                                                         soup.triangleCount())
-                                      : INFINITY;
+          devs[f] = tri->HasUVNodes()
+                        ? measureDeviation(eval, soup.positions.data(), uv.data(), soup.indices.data(),
+                                           soup.triangleCount(), r.deflection)
+                        : INFINITY;
           angles[f] = tri->HasUVNodes() ? measureCornerAngle(eval, soup.positions.data(), uv.data(), uv.size() / 2,
                                                               soup.indices.data(), soup.triangleCount(), 0.1 * r.deflection)
                                         : INFINITY;

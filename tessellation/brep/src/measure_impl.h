@@ -2,6 +2,7 @@
 // compares both with the same code).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -17,8 +18,9 @@ namespace cetview::brep {
 // the surface point nearest to it on a grid over the triangle's (u, v): never under the distance,
 // and over it only where the nearest point lies beyond another local minimum from every start.
 // positions xyz and uv per vertex; idx three per triangle.
-double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv, const std::uint32_t* idx,
-                        std::size_t triangles);
+// A sample still over `fineAbove` (the tolerance it is judged by) is also taken from a finer grid.
+double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv,
+                        const std::uint32_t* idx, std::size_t triangles, double fineAbove = INFINITY);
 
 // Largest angle (radians) between the exact surface normals at the two ends of a triangle edge:
 // DESIGN.md's angular deflection. Edges shorter than `minLength` (the size below which neither
