@@ -69,9 +69,9 @@ TEST(CollapsedSurface, AFanCollapsedOntoAPointIsNotSplitOnAndOnBesideIt) {
 // periodic_fan_between_two_points.brep (fuzz seed 505 input 175) is a B-spline, periodic and cubic
 // in u over a range of 1e-3, whose first row of poles is one point and most of the others another:
 // it fans between the two. On level 0 at 0.0161% one triangle's split point, at a corner of the
-// collapsed part, merged with a vertex already there, pass after pass; each time the split marked
-// its corners taken, so a triangle beside it, 2.04x the level's tolerance, waited for its turn, and
-// the level ended when no point went in. A split that merges or is rejected is not asked again on
+// collapsed part, could not be made (merged with a vertex or rejected), pass after pass; each time
+// it marked its corners taken, so a triangle beside it, 2.04x the level's tolerance, waited for its
+// turn, and the level ended when no point went in. A split that merges or is rejected is not asked again on
 // that level, and the passes go on while a triangle waits beside one.
 TEST(CollapsedSurface, ATriangleWaitingBesideASplitThatCannotBeMadeIsStillSplit) {
   const std::vector<FaceQuality> levels = test::testDataEveryLevel(
@@ -81,9 +81,9 @@ TEST(CollapsedSurface, ATriangleWaitingBesideASplitThatCannotBeMadeIsStillSplit)
 
 // flat_periodic_sheet_from_a_pole.brep (fuzz seed 505 input 16) is a flat B-spline sheet, periodic
 // in u over a range of 1e-3, whose row v = vmin is one point: a disc fanning from a pole. On its
-// last level at 0.0542% a triangle with two corners on that point, without area whatever its
-// third, took repairing flips that kept those two corners and walked around the fan, a new
-// quadrilateral each pass, until the pass bound (3800 passes; the face then reported as not
+// last level at 0.0542% a triangle with a corner on the pole and its corners in line through it
+// (flipped, its facet noise, whatever its third corner) took repairing flips that kept the pole
+// and one other corner, a new quadrilateral each pass, until the pass bound (3800 passes; the face then reported as not
 // reaching its tolerances). Flips that keep an edge of the flipped triangle are bounded per level.
 TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAFan) {
   auto model = test::loadTestData("flat_periodic_sheet_from_a_pole.brep");

@@ -187,9 +187,10 @@ class FaceMesher {
   // Flips of each quadrilateral this level, keyed by its two diagonals (vertex pairs, in order).
   std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, int, QuadKeyHash> quadFlips_;
   // Flips this level that kept each edge (a, b) of the flipped triangle (a, b, c) (pairKey): a
-  // triangle whose corners a and b share a 3D point stays without area whatever its third corner,
-  // and its repairing flips walked around the fan of b, a new quadrilateral each pass, until the
-  // pass bound (a fuzzed face: 3800 passes on a level). At most kMaxPivotFlips per edge: with 8,
+  // triangle with a corner on a pole and its corners in line through it stays flipped (its facet
+  // is noise) whatever its third corner, and its repairing flips, keeping the pole and one other
+  // corner, walked a new quadrilateral each pass until the pass bound (a fuzzed face: 3800 passes
+  // on a level). At most kMaxPivotFlips per edge: with 8,
   // flips refused elsewhere left their triangles to splits that cascaded (a fuzzed face's last
   // level: 76.9k triangles -> 501k, to the point bound).
   static constexpr int kMaxPivotFlips = 64;
