@@ -83,8 +83,9 @@ TEST(CollapsedSurface, ATriangleWaitingBesideASplitThatCannotBeMadeIsStillSplit)
 // in u over a range of 1e-3, whose row v = vmin is one point: a disc fanning from a pole. On its
 // last level at 0.0542% a triangle with a corner on the pole and its corners in line through it
 // (flipped, its facet noise, whatever its third corner) took repairing flips that kept the pole
-// and one other corner, a new quadrilateral each pass, until the pass bound (3800 passes; the face then reported as not
-// reaching its tolerances). Flips that keep an edge of the flipped triangle are bounded per level.
+// and one other corner, a new quadrilateral each pass, until the pass bound (3800 passes; the face
+// then reported as not reaching its tolerances). Flips that keep an edge of the flipped triangle
+// are bounded per level.
 TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAFan) {
   auto model = test::loadTestData("flat_periodic_sheet_from_a_pole.brep");
   ASSERT_TRUE(model);

@@ -247,8 +247,8 @@ TEST(HardCases, AnEdgeAlongATinySpanIsNotHalvedForTheSurfaceBeyondTheSpan) {
 // came: each centroid split overrode the chord's clearance and put the next apex a third as far
 // from the chord, on and on until the point bound (level 4 at 0.0285%: 501884 triangles, 71973 of
 // no area, 8 s; levels 5 and 6, left with the points of level 4, 1.7x and 3.4x their tolerances),
-// and the face was reported as not reaching its tolerances. A split that breaks the clearance is now decided
-// by the measure, which finds the triangle within the tolerance.
+// and the face was reported as not reaching its tolerances. A split that breaks the clearance is
+// now decided by the measure, which finds the triangle within the margin the refinement aims at.
 TEST(HardCases, AReadingThatStaysOverTheToleranceDoesNotMarchSplitsIntoAChord) {
   auto model = test::loadTestData("rational_pyramid.brep");
   ASSERT_TRUE(model);

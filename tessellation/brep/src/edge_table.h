@@ -37,7 +37,7 @@ class EdgeTable {
   // What the discretisation needs of a face's surface (SurfaceEval's scaling and parameter box).
   struct FaceScale {
     bool valid = false;          // false: the face has no usable surface and does not guide its edges
-    double su = 1, sv = 1;       // the face's UV scaling
+    double su = 1, sv = 1;       // the face's mean UV scales (findCrossings' plane)
     UvAxis uAxis, vAxis;         // its scaled UV plane, per knot span where spans differ (SurfaceEval)
     double uMin = 0, uMax = 0, vMin = 0, vMax = 0;
     // Tori and free-form surfaces (B-spline, Bezier, offset, swept): beside an edge the surface can
