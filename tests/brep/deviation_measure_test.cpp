@@ -108,6 +108,27 @@ TEST(WildWeights, ATriangleAcrossATinySpanReadsAlikeInEveryCornerOrder) {
   }
 }
 
+// bilinear_collapsed_past_a_knot.brep (face_fuzz seed 707, input 253) is a bilinear B-spline patch
+// whose side v = vmax runs straight to a point at the knot u = -999.99957142857 and stays there:
+// past the knot every pole of that corner is one point. A zero-area triangle of its last level lies
+// along that side (its corners on one line of (u, v), 1e-13 apart in v): two corners 1.3e-7 and
+// 4.6e-7 of u before the knot, the third 7.1e-5 past it, on the point. In space it lies on the
+// side, straight, so on the surface. Its interpolated starts, and every even step of the seed line
+// but the first corner, lie past the knot on the point, where no step moves along u: it read
+// 0.0085, 2.38x the level's tolerance of 0.00357.
+TEST(CollapsedPastAKnot, AZeroAreaTriangleAlongTheSideMeasuresOnTheSide) {
+  const TopoDS_Face face = firstFace("bilinear_collapsed_past_a_knot.brep");
+  ASSERT_FALSE(face.IsNull());
+  const double uv[6] = {-999.99957156397556, -999.99900000000025, -999.99957188849032,
+                        -999.99900000000025, -999.99950000000001, -999.99900000000014};
+  EXPECT_LT(measuredTriangle(SurfaceEval(face), uv), 1e-6) << "0.0085 with the seed line's even steps alone";
+}
+
+TEST(CollapsedPastAKnot, EveryLevelMeasuresWithinItsTolerance) {
+  test::testDataEveryLevel("bilinear_collapsed_past_a_knot.brep",
+                           test::relative(0.00023310095909219373, 29.250858319981688));
+}
+
 TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
   // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
   // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface
