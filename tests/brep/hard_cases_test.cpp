@@ -192,6 +192,46 @@ TEST(HardCases, UnevenKnotSpans) {
   checkSheet(face, "uneven_knots");
 }
 
+// A flat bilinear sheet whose first u span (a tenth of u) runs 10 units and the rest 1: the face
+// is triangulated in a plane scaled per span, where its side A-B, straight in (u, v) across the
+// knot, bends at the knot as it does in space. Level 0's chord from just before the bend to just
+// past it passes over a small square hole inside the bend; in (u, v), with one scale per direction,
+// it runs along the straight side, clear of the hole. The boundary's crossings were sought in that
+// plane, so the chord was not halved, and level 0 showed BRepMesh's mesh ("boundary crosses itself
+// in UV").
+TEST(HardCases, ABoundaryChordCrossingAHoleOnlyInTheScaledPlaneIsHalved) {
+  TColgp_Array2OfPnt poles(1, 3, 1, 2);
+  const double x[3] = {0, 10, 11};
+  for (int i = 1; i <= 3; ++i) poles(i, 1) = gp_Pnt(x[i - 1], 0, 0), poles(i, 2) = gp_Pnt(x[i - 1], 0, 10);
+  TColStd_Array1OfReal uKnots(1, 3), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, 3), vMults(1, 2);
+  uKnots(1) = 0, uKnots(2) = 0.1, uKnots(3) = 1, uMults(1) = 2, uMults(2) = 1, uMults(3) = 2;
+  vKnots(1) = 0, vKnots(2) = 1, vMults(1) = 2, vMults(2) = 2;
+  Handle(Geom_BSplineSurface) sheet = new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 1, 1);
+  auto side = [&](const gp_Pnt2d& a, const gp_Pnt2d& b) {
+    return BRepBuilderAPI_MakeEdge(new Geom2d_Line(a, gp_Dir2d(gp_Vec2d(a, b))), sheet, 0, a.Distance(b))
+        .Edge();
+  };
+  auto loop = [&](const std::vector<gp_Pnt2d>& corners) {
+    BRepBuilderAPI_MakeWire wire;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      wire.Add(side(corners[i], corners[(i + 1) % corners.size()]));
+    return wire.Wire();
+  };
+  // The outline: A (5, 2) in space, B (10.5, 8) past the knot, C (5, 8); the hole, clockwise, spans
+  // x 9.82-9.88 and z 2.69-2.75, where the bent side runs at z 2.58 and the chord at z 2.73.
+  BRepBuilderAPI_MakeFace make(sheet, loop({{0.05, 0.2}, {0.55, 0.8}, {0.05, 0.8}}));
+  make.Add(loop({{0.0982, 0.269}, {0.0982, 0.275}, {0.0988, 0.275}, {0.0988, 0.269}}));
+  ASSERT_TRUE(make.IsDone());
+  TopoDS_Face face = make.Face();
+  BRepLib::BuildCurves3d(face);
+  auto model = test::loadShape(face, "chord_across_a_knot_over_a_hole");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::relative(0.001));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
+}
+
 // uneven_edge_span.brep (tests/brep/data, as face_fuzz wrote it) is a bicubic B-spline whose last v
 // span is 2.6e-6 of its range of 1.64 and carries thousands of units of its side u = 0: the edge's
 // segments were checked at fractions of their parameter range only, none of which fell in that

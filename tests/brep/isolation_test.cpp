@@ -3,6 +3,7 @@
 // clean run gives.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <thread>
@@ -15,6 +16,7 @@
 #include <gp_Pln.hxx>
 
 #include "brepmesh_fallback.h"
+#include "edge_table.h"
 #include "face_mesher.h"
 #include "test_support.h"
 
@@ -265,6 +267,28 @@ TEST(Isolation, AFaceStopsAtTheWorkBoundAndSaysSo) {
   // The level it stopped on added at most the bound and one pass beyond; the next levels refine
   // only their boundary.
   EXPECT_LE(bound->triangleCount(bound->lastLevel()), free->triangleCount(bound->lastLevel()) / 2);
+}
+
+// edge_far_off_its_face.brep (face_fuzz seed 303, input 11) is a B-spline face 2.9 across whose
+// edge 12 runs 1.08e6 units through space: on level 1 its discretisation took 2.2 million points (6
+// s), and the face's boundary built from them (10 s more) held a cancelled run 7.5 s past the flag.
+// Each edge now stops at EdgeTable::kMaxPoints on a level, and its faces say so.
+TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
+  auto model = test::loadTestData("edge_far_off_its_face.brep");
+  ASSERT_TRUE(model);
+  auto created = Tessellator::create(*model, test::relative(0.00053658762185832064, 39.178301670862901));
+  ASSERT_TRUE(created.tessellator) << created.error;
+  Tessellator& t = *created.tessellator;
+  ASSERT_TRUE(t.run(1, {}, nullptr, 0));
+  ASSERT_TRUE(t.run(1, {}, nullptr, 1));
+  std::size_t most = 0;
+  for (EdgeId e = 0; e < model->edgeCount(); ++e) {
+    std::vector<float> xyz;
+    t.edgePolyline(e, 1, xyz);
+    most = std::max(most, xyz.size() / 3);
+  }
+  EXPECT_EQ(most, EdgeTable::kMaxPoints) << "2.2 million without the bound";
+  EXPECT_NE(t.report(0).reason.find("discretisation stopped at"), std::string::npos) << t.report(0).reason;
 }
 
 // The default bound grows with the face (256 times its points before the level, at least 250k) up

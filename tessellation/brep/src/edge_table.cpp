@@ -253,8 +253,7 @@ bool EdgeTable::discretise(int level, WorkerPool& pool, unsigned threads, const 
     if (!discretiseEdge(static_cast<EdgeId>(e), level, tolerance, cancel)) cancelled = true;
   });
   if (cancelled) return false;
-  separateCrossings(level, pool, threads);
-  return true;
+  return separateCrossings(level, pool, threads, cancel);
 }
 
 // Only planes, cylinders, cones and spheres use the edge (a hole in a plate, a shaft's end, a
@@ -311,45 +310,67 @@ double EdgeTable::pcurveParameter(const Info& info, const FaceUse& use, double t
 }
 
 // Coarse chords of two loops (or two parts of one loop) that run close together can cross in the
-// face's parameter plane where the curves do not: the face could not be meshed from that level's
-// boundary. Both crossing segments are halved, for every face that uses their edges, until no face's
-// segments cross (or a few rounds have passed: pcurves that really cross are the mesher's to report).
-void EdgeTable::separateCrossings(int level, WorkerPool& pool, unsigned threads) {
+// plane the face is triangulated in (its scaled UV, SurfaceEval::scaled) where the curves do not: the
+// face could not be meshed from that level's boundary. Both crossing segments are halved, for every
+// face that uses their edges, until no face's segments cross (or a few rounds have passed: pcurves
+// that really cross are the mesher's to report). That plane is scaled per knot span where spans
+// differ, so a chord straight there is not straight in (u, v): the crossings are sought between the
+// ends' scaled points, as the mesher joins them.
+bool EdgeTable::separateCrossings(int level, WorkerPool& pool, unsigned threads,
+                                  const std::atomic<bool>* cancel) {
   constexpr int kRounds = 8;
+  const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   for (int round = 0; round < kRounds; ++round) {
     std::vector<std::vector<SegmentId>> found(faceUses_.size());
     parallelFor(pool, faceUses_.size(), threads,
-                [&](std::size_t f) { findCrossings(static_cast<FaceId>(f), level, found[f]); });
+                [&](std::size_t f) { findCrossings(static_cast<FaceId>(f), level, found[f], cancel); });
+    if (cancelled()) return false;
     std::vector<SegmentId> split;
     for (const auto& list : found) split.insert(split.end(), list.begin(), list.end());
-    if (split.empty()) return;
+    if (split.empty()) return true;
     std::sort(split.begin(), split.end());
     split.erase(std::unique(split.begin(), split.end()), split.end());
-    // Per edge, its segments from the last one back, so earlier indices stay valid.
     std::vector<std::size_t> starts;
     for (std::size_t i = 0; i < split.size(); ++i)
       if (i == 0 || split[i].edge != split[i - 1].edge) starts.push_back(i);
     starts.push_back(split.size());
+    // Per edge, one pass that halves its listed segments (inserting them one by one moved the
+    // points after each: on a fuzzed face whose rounds halved tens of thousands of segments of long
+    // edges, that alone took seconds).
     parallelFor(pool, starts.size() - 1, threads, [&](std::size_t g) {
       const EdgeId e = split[starts[g]].edge;
       EdgePoints& points = levels_[e][static_cast<std::size_t>(level)];
+      if (points.t.size() + (starts[g + 1] - starts[g]) > kMaxPoints) {
+        points.capped = true;
+        return;
+      }
       try {
         BRepAdaptor_Curve curve(TopoDS::Edge(model_.edgeShapes[e].Oriented(TopAbs_FORWARD)));
-        for (std::size_t i = starts[g + 1]; i-- > starts[g];) {
-          const std::uint32_t j = split[i].segment;
+        EdgePoints halved;
+        halved.t.reserve(points.t.size() + (starts[g + 1] - starts[g]));
+        halved.p.reserve(halved.t.capacity());
+        std::size_t next = starts[g];
+        for (std::uint32_t j = 0; j < points.t.size(); ++j) {
+          halved.t.push_back(points.t[j]);
+          halved.p.push_back(points.p[j]);
+          if (next == starts[g + 1] || split[next].segment != j) continue;
+          ++next;
           const double tm = 0.5 * (points.t[j] + points.t[j + 1]);
           if (!(tm > points.t[j] && tm < points.t[j + 1])) continue;
-          points.t.insert(points.t.begin() + j + 1, tm);
-          points.p.insert(points.p.begin() + j + 1, curve.Value(tm));
+          halved.t.push_back(tm);
+          halved.p.push_back(curve.Value(tm));
         }
+        points = std::move(halved);
       } catch (const Standard_Failure&) {
         // Left as it is: the face mesher reports the crossing.
       }
     });
   }
+  return true;
 }
 
-void EdgeTable::findCrossings(FaceId face, int level, std::vector<SegmentId>& out) const {
+void EdgeTable::findCrossings(FaceId face, int level, std::vector<SegmentId>& out,
+                              const std::atomic<bool>* cancel) const {
   struct Segment {
     double x0, y0, x1, y1;
     SegmentId id;
@@ -363,7 +384,7 @@ void EdgeTable::findCrossings(FaceId face, int level, std::vector<SegmentId>& ou
     double px = 0, py = 0;
     for (std::size_t j = 0; j < points.t.size(); ++j) {
       const gp_Pnt2d uv = use.pcurve->Value(pcurveParameter(info, use, points.t[j]));
-      const double x = uv.X() * scale.su, y = uv.Y() * scale.sv;
+      const double x = scale.uAxis.map(uv.X()), y = scale.vAxis.map(uv.Y());
       if (j > 0) segments.push_back({px, py, x, y, {e, static_cast<std::uint32_t>(j - 1)}});
       px = x, py = y;
     }
@@ -374,6 +395,7 @@ void EdgeTable::findCrossings(FaceId face, int level, std::vector<SegmentId>& ou
   };
   std::sort(segments.begin(), segments.end(), [](const Segment& a, const Segment& b) { return std::min(a.x0, a.x1) < std::min(b.x0, b.x1); });
   for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (i % 1024 == 0 && cancel && cancel->load(std::memory_order_relaxed)) return;
     const Segment& a = segments[i];
     const double aRight = std::max(a.x0, a.x1), aLow = std::min(a.y0, a.y1), aHigh = std::max(a.y0, a.y1);
     for (std::size_t j = i + 1; j < segments.size() && std::min(segments[j].x0, segments[j].x1) <= aRight; ++j) {
@@ -399,6 +421,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
   EdgePoints& out = levels_[e][static_cast<std::size_t>(level)];
   out.t.clear();
   out.p.clear();
+  out.capped = false;
   if (info.degenerated) return true;
   if (info.broken) {
     out.t = {info.first, info.last};
@@ -816,7 +839,9 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         if (++examined % 64 == 0 && cancel && cancel->load(std::memory_order_relaxed)) return false;
         Item s = stack.back();
         stack.pop_back();
-        if (!misses(s, tol)) {
+        const bool full = out.t.size() + stack.size() + (seedT.size() - i) >= kMaxPoints;
+        out.capped = out.capped || full;
+        if (full || !misses(s, tol)) {
           out.t.push_back(s.tb);
           out.p.push_back(s.pb);
           continue;

@@ -1448,6 +1448,20 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   return indices;
 }
 
+// An edge of the face stopped at the point bound on level k: its chords, and the face's mesh
+// beside them, may miss the level's tolerances (said once, as every repair).
+void FaceMesher::noteCappedEdges(int k, const EdgeTable& edges) {
+  for (const auto& loop : topology_.loops) {
+    for (const LoopEdge& le : loop) {
+      if (le.degenerated || !edges.points(le.edge, k).capped) continue;
+      repairs_.push_back("an edge's discretisation stopped at " + std::to_string(EdgeTable::kMaxPoints) +
+                         " points: its chords may miss the tolerances");
+      repaired_ = true;
+      return;
+    }
+  }
+}
+
 // Each repair once, in the order first made: a domain rebuilt on a later level repeats the repairs
 // its wires needed ("inner wire ran counter-clockwise in UV; reversed" 24 times on a fuzzed face).
 std::string FaceMesher::repairsReason() const {
@@ -1555,6 +1569,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     if (eval_.collapsed()) return leaveEmpty("the surface has no area (it collapses onto a curve or a point)", mesh, report);
   }
   std::string problem;
+  noteCappedEdges(k, edges);
   try {
     bool ok = true;
     if (!cdt_) {

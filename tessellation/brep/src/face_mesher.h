@@ -289,6 +289,7 @@ class FaceMesher {
   TriangleRecords records_;
   bool repaired_ = false;
   std::vector<std::string> repairs_;
+  void noteCappedEdges(int k, const EdgeTable& edges);
   std::string repairsReason() const;  // repairs_ joined, each once
   bool fallback_ = false;
   bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely

@@ -110,8 +110,8 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
     EdgeTable::FaceScale scale;
     try {
       const TopoDS_Face face = TopoDS::Face(model.impl().faceShapes[f].Oriented(TopAbs_FORWARD));
-      auto eval = std::make_unique<SurfaceEval>(face, kDeviationMargin * schedule.back().chordal, schedule.back().angleRad);
-      scale.su = eval->su, scale.sv = eval->sv;
+      auto eval = std::make_unique<SurfaceEval>(face, kDeviationMargin * schedule.back().chordal,
+                                                schedule.back().angleRad);
       scale.uAxis = eval->uAxis(), scale.vAxis = eval->vAxis();
       scale.uMin = eval->uMin, scale.uMax = eval->uMax, scale.vMin = eval->vMin, scale.vMax = eval->vMax;
       const GeomAbs_SurfaceType type = eval->adaptor().GetType();
