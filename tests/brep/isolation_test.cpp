@@ -279,8 +279,7 @@ TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
   auto created = Tessellator::create(*model, test::relative(0.00053658762185832064, 39.178301670862901));
   ASSERT_TRUE(created.tessellator) << created.error;
   Tessellator& t = *created.tessellator;
-  ASSERT_TRUE(t.run(1, {}, nullptr, 0));
-  ASSERT_TRUE(t.run(1, {}, nullptr, 1));
+  ASSERT_TRUE(t.run(1, {}, nullptr, 1));  // levels 0 and 1
   std::size_t most = 0;
   for (EdgeId e = 0; e < model->edgeCount(); ++e) {
     std::vector<float> xyz;

@@ -1241,9 +1241,16 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       int at = -1, flipEdge = -1;
       bool forAngle = false, forDeviation = false;
       // Corners off the surface (edge points of an edge that strays from it within its tolerance)
-      // hold the triangle that far from it whatever its size: the deviation it can reach.
-      const double reachable = chordal + std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)], offset_[m.vertex(t, 2)]});
-      if (r->deviation > reachable && (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed)) &&
+      // hold the triangle that far from it at those corners whatever its size: the deviation it can
+      // reach, where that is beyond the target. Not the target plus it: the samples inside take a
+      // corner's distance only in part, and as the triangles shrink they come within the target
+      // wherever the corners are (a fuzzed face with corners 3.6e-6 off its surface ended 1.16x its
+      // tolerance of 1.02e-5, its triangles read within 1.2e-5).
+      const double reachable =
+          std::max(chordal, static_cast<double>(std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)],
+                                                          offset_[m.vertex(t, 2)]})));
+      if (r->deviation > reachable &&
+          (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed)) &&
           !withinByTheMeasure(t, mesh, *r, reachable)) {
         at = r->worstSample;
         forDeviation = true;
