@@ -1241,14 +1241,17 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       int at = -1, flipEdge = -1;
       bool forAngle = false, forDeviation = false;
       // Corners off the surface (edge points of an edge that strays from it within its tolerance)
-      // hold the triangle that far from it at those corners whatever its size: the deviation it can
-      // reach, where that is beyond the target. Not the target plus it: the samples inside take a
-      // corner's distance only in part, and as the triangles shrink they come within the target
-      // wherever the corners are (a fuzzed face with corners 3.6e-6 off its surface ended 1.16x its
-      // tolerance of 1.02e-5, its triangles read within 1.2e-5).
-      const double reachable =
-          std::max(chordal, static_cast<double>(std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)],
-                                                          offset_[m.vertex(t, 2)]})));
+      // hold the triangle that far from it at those corners whatever its size. Within the level's
+      // tolerance, the samples inside take a corner's distance only in part, and as the triangles
+      // shrink they come within the target wherever the corners are: the target then, or the
+      // corners' distance where that is larger (with the target plus the distance, a fuzzed face
+      // with corners 3.6e-6 off its surface ended 1.16x its tolerance of 1.02e-5). Beyond it (the
+      // face says its edges stray beyond the deflection), the target plus the distance: the
+      // deviation it can reach (held to the distance alone, a fuzzed face straying 8x its
+      // tolerance took 391 flipped triangles instead of 6).
+      const double off =
+          std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)], offset_[m.vertex(t, 2)]});
+      const double reachable = off <= level.chordal ? std::max(chordal, off) : chordal + off;
       if (r->deviation > reachable &&
           (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed)) &&
           !withinByTheMeasure(t, mesh, *r, reachable)) {
