@@ -241,11 +241,10 @@ TEST(HardCases, ABoundaryChordCrossingAHoleOnlyInTheScaledPlaneIsHalved) {
 TEST(HardCases, AnEdgeSpanFarShorterThanItsSegmentIsSampled) {
   auto model = test::loadTestData("uneven_edge_span.brep");
   ASSERT_TRUE(model);
-  auto created = Tessellator::create(*model, test::relative(0.00015201004304370571, 57.905241474021516));
-  ASSERT_TRUE(created.tessellator) << created.error;
-  Tessellator& t = *created.tessellator;
+  auto tessellated = test::tessellate(*model, test::relative(0.00015201004304370571, 57.905241474021516), 1);
+  ASSERT_TRUE(tessellated);
+  const Tessellator& t = *tessellated;
   ASSERT_GE(t.lastLevel(), 1);
-  ASSERT_TRUE(t.run(1, {}, nullptr, 1));
   for (int k = 0; k <= 1; ++k) {
     const FaceQuality q = measureFaces(t, k).at(0);
     EXPECT_LE(q.maxDeviation, t.schedule()[std::size_t(k)].chordal) << "level " << k << ": 1.08x on level 1 before";

@@ -276,10 +276,9 @@ TEST(Isolation, AFaceStopsAtTheWorkBoundAndSaysSo) {
 TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
   auto model = test::loadTestData("edge_far_off_its_face.brep");
   ASSERT_TRUE(model);
-  auto created = Tessellator::create(*model, test::relative(0.00053658762185832064, 39.178301670862901));
-  ASSERT_TRUE(created.tessellator) << created.error;
-  Tessellator& t = *created.tessellator;
-  ASSERT_TRUE(t.run(1, {}, nullptr, 1));  // levels 0 and 1
+  auto tessellated = test::tessellate(*model, test::relative(0.00053658762185832064, 39.178301670862901), 1);
+  ASSERT_TRUE(tessellated);
+  const Tessellator& t = *tessellated;
   std::size_t most = 0;
   for (EdgeId e = 0; e < model->edgeCount(); ++e) {
     std::vector<float> xyz;

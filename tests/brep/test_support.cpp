@@ -36,10 +36,10 @@ std::unique_ptr<Model> loadTestData(const std::string& file) {
   return std::move(r.model);
 }
 
-std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params) {
+std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params, int lastLevel) {
   auto created = Tessellator::create(model, params);
   EXPECT_TRUE(created.tessellator) << created.error;
-  if (created.tessellator && !created.tessellator->run(1)) {
+  if (created.tessellator && !created.tessellator->run(1, {}, nullptr, lastLevel)) {
     ADD_FAILURE() << "run() returned false";
     return nullptr;
   }

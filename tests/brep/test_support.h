@@ -44,8 +44,9 @@ std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshPa
 
 // A model from tests/brep/data (inputs face_fuzz wrote); fails the test on a load error.
 std::unique_ptr<Model> loadTestData(const std::string& file);
-// Every level of every face on one thread; null, with a test failure, on an error.
-std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params);
+// Every level of every face (up to `lastLevel`; -1: all) on one thread; null, with a test failure,
+// on an error.
+std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params, int lastLevel = -1);
 // Face f's measures on each level, each level's deviation expected within its chordal tolerance.
 std::vector<FaceQuality> expectEveryLevelWithinTolerance(const Tessellator& t, FaceId f);
 // The same for the first face of a model from tests/brep/data tessellated with `params`; empty,

@@ -861,6 +861,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
   } catch (const Standard_Failure&) {
     out.t = {info.first, info.last};
     out.p = {info.p0, info.p1};
+    out.capped = false;
   }
   return true;
 }

@@ -1245,10 +1245,10 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // tolerance, the samples inside take a corner's distance only in part, and as the triangles
       // shrink they come within the target wherever the corners are: the target then, or the
       // corners' distance where that is larger (with the target plus the distance, a fuzzed face
-      // with corners 3.6e-6 off its surface ended 1.16x its tolerance of 1.02e-5). Beyond it (the
-      // face says its edges stray beyond the deflection), the target plus the distance: the
-      // deviation it can reach (held to the distance alone, a fuzzed face straying 8x its
-      // tolerance took 391 flipped triangles instead of 6).
+      // with corners 3.6e-6 off its surface ended 1.16x its tolerance of 1.02e-5). Beyond the
+      // level's tolerance, the target plus the distance: the deviation it can reach (held to the
+      // distance alone, a fuzzed face straying 8x its tolerance took 391 flipped triangles instead
+      // of 6). A face whose edges stray beyond the final deflection says so (strayReported_).
       const double off =
           std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)], offset_[m.vertex(t, 2)]});
       const double reachable = off <= level.chordal ? std::max(chordal, off) : chordal + off;

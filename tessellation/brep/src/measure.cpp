@@ -16,6 +16,9 @@ namespace cetview::brep {
 
 namespace {
 
+// Steps of the grid over a triangle's (u, v) that the measure seeds its projections from.
+constexpr int kSeedSteps = 16;
+
 // Seeds along a line of (u, v): `at(s)` seeds the surface point at s in [0, 1] of the line and
 // returns it. Points at as many even steps as the measure's seed grid has, and between two
 // consecutive ones, by halving, further points while the surface runs more than `gap` between two
@@ -25,7 +28,7 @@ namespace {
 // the surface, read 2.38x its tolerance.
 template <class At>
 void seedLine(At&& at, double gap) {
-  constexpr int kLineSteps = 153;  // as many points as the seed grid over a triangle has
+  constexpr int kLineSteps = (kSeedSteps + 1) * (kSeedSteps + 2) / 2;  // as many as the grid has
   constexpr int kMaxExtra = 1024;
   constexpr int kMaxDepth = 40;
   struct Span {
@@ -71,7 +74,6 @@ double longestSide(const double* positions, const std::uint32_t v[3]) {
 
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv,
                         const std::uint32_t* idx, std::size_t triangles, double fineAbove) {
-  constexpr int kSeedSteps = 16;
   // The centroid and the barycentric grid of step 1/4 without the corners.
   static const double kSamples[13][3] = {
       {1.0 / 3, 1.0 / 3, 1.0 / 3}, {.75, .25, 0}, {.5, .5, 0}, {.25, .75, 0}, {0, .75, .25}, {0, .5, .5}, {0, .25, .75},
