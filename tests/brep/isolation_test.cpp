@@ -289,6 +289,19 @@ TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
   EXPECT_NE(t.report(0).reason.find("discretisation stopped at"), std::string::npos) << t.report(0).reason;
 }
 
+// On its last level the same face ends on its fallback mesh (its capped chords cross each other in
+// UV): its reason gives that cause and, after it, the cap that led to it (it gave the cause alone).
+TEST(Isolation, AFaceThatFallsBackAfterAnEdgeStoppedSaysBoth) {
+  auto model = test::loadTestData("edge_far_off_its_face.brep");
+  ASSERT_TRUE(model);
+  auto tessellated = test::tessellate(*model, test::relative(0.00053658762185832064, 39.178301670862901));
+  ASSERT_TRUE(tessellated);
+  const FaceReport& r = tessellated->report(0);
+  EXPECT_EQ(r.status, FaceStatus::kFallback) << r.reason;
+  EXPECT_NE(r.reason.find("discretisation stopped at"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find(FaceMesher::kDeferredLevel), std::string::npos) << r.reason;
+}
+
 // The default bound grows with the face (256 times its points before the level, at least 250k) up
 // to a million points: a fuzzed face starting from 19889 boundary points (an edge 222 units off its
 // surface) and refining for ever by a pole was allowed 5.1 million, minutes and gigabytes on level

@@ -1474,12 +1474,13 @@ void FaceMesher::noteCappedEdges(int k, const EdgeTable& edges) {
 
 // Each repair once, in the order first made: a domain rebuilt on a later level repeats the repairs
 // its wires needed ("inner wire ran counter-clockwise in UV; reversed" 24 times on a fuzzed face).
-std::string FaceMesher::repairsReason() const {
+std::string FaceMesher::repairsReason(bool withDeferredLevels) const {
   std::string reason;
   for (std::size_t i = 0; i < repairs_.size(); ++i) {
     if (std::find(repairs_.begin(), repairs_.begin() + static_cast<std::ptrdiff_t>(i), repairs_[i]) !=
         repairs_.begin() + static_cast<std::ptrdiff_t>(i))
       continue;
+    if (!withDeferredLevels && repairs_[i].find(kDeferredLevel) != std::string::npos) continue;
     reason += (reason.empty() ? "" : "; ") + repairs_[i];
   }
   return reason;
@@ -1524,7 +1525,11 @@ FaceStatus FaceMesher::useFallback(std::string why, FaceMesh& mesh, FaceReport& 
   fallback_ = true;
   fallbackStatus_ = ok ? FaceStatus::kFallback : FaceStatus::kEmpty;
   report.status = fallbackStatus_;
-  report.reason = ok ? why : why + "; fallback failed too: " + failure;
+  // What the face needed before it fell back (an edge stopped at its point bound, a wire reversed)
+  // may be why it did: said after the cause. The deferred levels' lines repeat a cause; left out.
+  const std::string before = repairsReason(false);
+  report.reason =
+      why + (before.empty() ? "" : "; " + before) + (ok ? "" : "; fallback failed too: " + failure);
   mesh.levels.push_back(std::move(indices));
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
   return fallbackStatus_;
@@ -1551,7 +1556,7 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
       return useFallback(why, mesh, report, cancel);
     }
   }
-  repairs_.push_back("level " + std::to_string(k) + " shows the fallback mesh: " + why);
+  repairs_.push_back("level " + std::to_string(k) + kDeferredLevel + why);
   repaired_ = true;
   mesh.levels.push_back(deferredIndices_);
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));

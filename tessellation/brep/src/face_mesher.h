@@ -72,6 +72,9 @@ class FaceMesher {
   FaceStatus advance(int k, const Level& level, const EdgeTable& edges, FaceMesh& mesh, FaceReport& report,
                      const std::atomic<bool>* cancel, bool finalLevel);
 
+  // In a face's reason: a coarse level showed the fallback mesh ("level 0 shows the fallback mesh: ...").
+  static constexpr const char* kDeferredLevel = " shows the fallback mesh: ";
+
  private:
   struct Occurrence {
     std::size_t loop = 0, index = 0;  // position in topology_.loops
@@ -290,7 +293,8 @@ class FaceMesher {
   bool repaired_ = false;
   std::vector<std::string> repairs_;
   void noteCappedEdges(int k, const EdgeTable& edges);
-  std::string repairsReason() const;  // repairs_ joined, each once
+  // repairs_ joined, each once; without the lines of levels deferred to the fallback on request.
+  std::string repairsReason(bool withDeferredLevels = true) const;
   bool fallback_ = false;
   bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely
   bool exactDeviation_ = false;  // triangles' deviations in closed form, not sampled
