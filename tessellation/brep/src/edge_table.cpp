@@ -1,6 +1,7 @@
 // Edge discretisation by recursive subdivision with the two criteria of Laug & Borouchaki (2016,
 // "Discrete CAD model for visualization and meshing", section 2.1): proximity (chordal distance of
-// the curve to each segment, sampled at every eighth) and regularity (turn angle between the
+// the curve to each segment, sampled at every eighth, and for a rational curve with uneven weights
+// bounded by its control points: curve_hull.h) and regularity (turn angle between the
 // tangents at a segment's ends, and between each tangent and the chord), plus the turn of the surface
 // normals of each face along the segment. Level k subdivides the
 // segments of level k-1 that fail the tolerances of level k, so levels are nested.
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -25,6 +27,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
+#include "curve_hull.h"
 #include "curve_poles.h"
 #include "facet_rules.h"
 #include "model_impl.h"
@@ -730,6 +733,9 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       }
       return false;
     };
+    // Where the samples below may miss the curve, its control points decide as well.
+    std::optional<CurveHull> hull;
+    if (!info.straight && CurveHull::samplesMayMiss(curve)) hull.emplace(curve);
     // The interior knots of a B-spline 3D curve: each span is one polynomial piece, and a segment's
     // samples (fractions of its parameter range) miss a span much shorter than the segment (a
     // fuzzed edge's last span, 2.6e-6 of its range of 1.64, carried thousands of units of its
@@ -775,6 +781,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         for (double f : {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875})
           if (distanceToSegment(curve.Value(s.ta + f * (s.tb - s.ta)), s.pa, s.pb) > crit.chordal) return true;
         if (offChordAtKnots(s.ta, s.tb, s.pa, s.pb, crit.chordal)) return true;
+        if (hull && hull->leaves(s.ta, s.tb, s.pa, s.pb, crit.chordal)) return true;
         if (chord > minSize) {
           const gp_Vec chordDir(s.pa, s.pb);
           if (angleBetween(s.da, s.db) > crit.angleRad || angleBetween(s.da, chordDir) > crit.angleRad ||
