@@ -167,7 +167,7 @@ InsertOutcome Triangulator::insertLocated(VertexId v, const Location& loc) {
   return InsertOutcome::kInserted;
 }
 
-bool Triangulator::insertPending(bool alreadyKdOrdered) {
+bool Triangulator::insertPending(bool alreadyKdOrdered, const std::atomic<bool>* cancel) {
   if (mesh_.empty() && !buildFirstTriangle()) return false;
   const auto n = static_cast<VertexId>(mesh_.vertexCount());
   // All pending ids, including the first triangle's three (skipped below, but still parents), so
@@ -176,7 +176,13 @@ bool Triangulator::insertPending(bool alreadyKdOrdered) {
   for (VertexId v = firstPending_; v < n; ++v) order_[v - firstPending_] = v;
   if (!alreadyKdOrdered) kdPermutation(mesh_.points(), order_.data(), order_.size());
   std::vector<KdRange> queue;
+  std::size_t visited = 0;
   forEachBreadthFirst(order_.data(), order_.size(), queue, [&](VertexId v, VertexId parent) {
+    if (cancelled_) return;
+    if (cancel && ++visited % kCancelStride == 0 && cancel->load(std::memory_order_relaxed)) {
+      cancelled_ = true;
+      return;
+    }
     if (mesh_.incident(v) != kNoTriangle || merged_.count(v) != 0) return;  // already in
     TriangleId hint = lastTouched_;
     if (parent != UINT32_MAX) {
@@ -190,6 +196,7 @@ bool Triangulator::insertPending(bool alreadyKdOrdered) {
     }
     insertLocated(v, loc);
   });
+  if (cancelled_) return false;
   firstPending_ = n;
   return true;
 }

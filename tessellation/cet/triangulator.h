@@ -12,6 +12,7 @@
 // outside the domain are only flagged, so ids stay stable and refinement walks can cross holes.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <unordered_map>
@@ -67,7 +68,11 @@ class Triangulator {
   // seen so far are collinear there is no triangle; they stay pending and the call returns false.
   // With alreadyKdOrdered, the caller promises the pending vertices are stored as a kd permutation
   // (kdPermutation() of them is the identity), which saves the partitioning.
-  bool insertPending(bool alreadyKdOrdered = false);
+  // `cancel`, looked at every kCancelStride vertices: once raised, the rest are skipped, the call
+  // returns false and cancelled() is true; the triangulation is then incomplete, to be discarded.
+  bool insertPending(bool alreadyKdOrdered = false, const std::atomic<bool>* cancel = nullptr);
+  bool cancelled() const { return cancelled_; }
+  static constexpr std::size_t kCancelStride = 1024;
 
   // Recovers the segment a -> b as an edge (both already inserted), flags it (1 on the side where
   // the triangle runs the same way, 2 on the other, 3 where both directions were given) and
@@ -131,6 +136,7 @@ class Triangulator {
   CetMesh mesh_;
   VertexId firstPending_ = 0;  // vertices [firstPending_, vertexCount) are not inserted yet
   bool domainMarked_ = false;
+  bool cancelled_ = false;        // insertPending() stopped at a raised flag: the triangulation is incomplete
   std::size_t segmentCount_ = 0;  // segments inserted so far (markDomain floods the hull only if > 0)
   TriangleId lastTouched_ = kNoTriangle;
   std::unordered_map<VertexId, VertexId> merged_;

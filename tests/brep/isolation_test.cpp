@@ -289,6 +289,39 @@ TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
   EXPECT_NE(t.report(0).reason.find("discretisation stopped at"), std::string::npos) << t.report(0).reason;
 }
 
+// The same face's boundary on level 1 (262144 points of the capped edge, half a second or more to
+// build) reads the flag as it goes: a flag raised 20 or 150 ms into the build stops it there, with
+// nothing left of it (the vertices it appended dropped), where the build ran to its end before the
+// flag was seen. Resumed, the face makes what an uninterrupted run makes.
+TEST(Isolation, ABoundaryBuildStopsAtTheFlagAndIsBuiltAgainWhole) {
+  auto model = test::loadTestData("edge_far_off_its_face.brep");
+  ASSERT_TRUE(model);
+  const MeshParams params = test::relative(0.00053658762185832064, 39.178301670862901);
+  auto clean = test::tessellate(*model, params, 1);
+  ASSERT_TRUE(clean);
+  int stoppedInBuild = 0;
+  for (const double ms : {20.0, 150.0}) {
+    auto t = Tessellator::create(*model, params).tessellator;
+    ASSERT_TRUE(t);
+    ASSERT_TRUE(t->run(1, {}, nullptr, 0));
+    ASSERT_TRUE(t->discretiseEdges(1));
+    const std::size_t before = t->faceMesh(0).vertexCount();
+    std::atomic<bool> cancel{false};
+    std::thread raise([&] {
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(ms));
+      cancel = true;
+    });
+    const FaceStatus status = t->advanceFace(0, 1, &cancel);
+    raise.join();
+    if (status == FaceStatus::kCancelled && t->faceMesh(0).vertexCount() == before) ++stoppedInBuild;
+    cancel = false;
+    ASSERT_NE(t->advanceFace(0, 1, &cancel), FaceStatus::kCancelled);
+    expectSameFace(*clean, *t, 0);
+    EXPECT_EQ(t->report(0).reason, clean->report(0).reason) << "cancelled after " << ms << " ms";
+  }
+  EXPECT_GE(stoppedInBuild, 1) << "every build ran to its end before the flag was seen";
+}
+
 // On its last level the same face ends on its fallback mesh (its capped chords cross each other in
 // UV): its reason gives that cause and, after it, the cap that led to it (it gave the cause alone).
 TEST(Isolation, AFaceThatFallsBackAfterAnEdgeStoppedSaysBoth) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -57,6 +58,29 @@ TEST(Triangulator, AllCollinearGivesNoTriangleAndNoCrash) {
   EXPECT_TRUE(tri.insertPending());
   EXPECT_EQ(tri.insideTriangleCount(), 99u);
   expectValidCdt(tri);
+}
+
+// A raised flag stops the bulk insertion within kCancelStride vertices: it returns false and says
+// so (no collinearity); the same points insert whole without it.
+TEST(Triangulator, BulkInsertionStopsAtARaisedFlag) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  std::vector<Point2> points(20 * Triangulator::kCancelStride);
+  for (Point2& p : points) p = {coordinate(random), coordinate(random)};
+  const std::atomic<bool> raised{true}, lowered{false};
+  Triangulator stopped;
+  stopped.addVertices(points.data(), points.size());
+  EXPECT_FALSE(stopped.insertPending(false, &raised));
+  EXPECT_TRUE(stopped.cancelled());
+  std::size_t in = 0;
+  for (VertexId v = 0; v < points.size(); ++v) in += stopped.mesh().incident(v) != kNoTriangle;
+  EXPECT_LE(in, Triangulator::kCancelStride + 3);
+  Triangulator whole;
+  whole.addVertices(points.data(), points.size());
+  EXPECT_TRUE(whole.insertPending(false, &lowered));
+  EXPECT_FALSE(whole.cancelled());
+  whole.markDomain(DomainRule::kHullAndHolePoints);
+  expectValidCdt(whole);
 }
 
 TEST(Triangulator, TwoPointsAndDuplicatesOnly) {

@@ -159,7 +159,15 @@ gp_Pnt2d FaceMesher::boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) c
 
 // ---------------------------------------------------------------------------------------------
 // Level 0 (or a rebuild): the whole domain from the edge points of level k.
-bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem) {
+bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
+                             const std::atomic<bool>* cancel, bool& cancelled) {
+  // A boundary of hundreds of thousands of points (an edge at its point bound) takes a second.
+  std::size_t steps = 0;
+  auto stop = [&] {
+    if (cancel && ++steps % cet::Triangulator::kCancelStride == 0 && cancel->load(std::memory_order_relaxed))
+      cancelled = true;
+    return cancelled;
+  };
   cdt_ = std::make_unique<cet::Triangulator>();
   base_ = static_cast<std::uint32_t>(mesh.vertexCount());
   normal_.clear();
@@ -187,6 +195,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       const EdgePoints& ep = edges.points(le.edge, k);
       OccPoints& op = occPoints[l][i];
       for (std::size_t j = 0; j < ep.t.size(); ++j) {
+        if (stop()) return false;
         op.uv.push_back(boundaryUV(le, ep.t[j], ep.p[j]));
         op.p.push_back(ep.p[j]);
         if (j > 0) {
@@ -245,6 +254,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       occ.loop = l, occ.index = i, occ.forward = !loop[i].reversed;
       occ.chain.assign(n, cet::kNoVertex);
       for (std::size_t s = 0; s < n; ++s) {
+        if (stop()) return false;
         const std::size_t j = occ.forward ? s : n - 1 - s;
         const bool firstOfOcc = s == 0, lastOfLoop = i + 1 == loop.size() && s + 1 == n;
         if (firstOfOcc && !ids.empty()) {
@@ -310,12 +320,14 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   }
   cdt_->reserve(points_.size() * 4);
   cdt_->addVertices(points_.data(), points_.size());
-  if (!cdt_->insertPending()) {
-    problem = "all boundary points are collinear in UV";
+  if (!cdt_->insertPending(false, cancel)) {
+    cancelled = cdt_->cancelled();
+    if (!cancelled) problem = "all boundary points are collinear in UV";
     return false;
   }
   for (const auto& loop : loops) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
+      if (stop()) return false;
       const cet::VertexId a = cdt_->representative(loop[i]), b = cdt_->representative(loop[(i + 1) % loop.size()]);
       if (a == b) continue;
       const cet::Status s = cdt_->insertSegment(a, b);
@@ -1486,6 +1498,14 @@ std::string FaceMesher::repairsReason(bool withDeferredLevels) const {
   return reason;
 }
 
+FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
+  cdt_.reset();
+  mesh.positions.resize(3 * std::size_t(base_));
+  mesh.normals.resize(3 * std::size_t(base_));
+  mesh.uv.resize(2 * std::size_t(base_));
+  return FaceStatus::kCancelled;
+}
+
 FaceStatus FaceMesher::leaveEmpty(const std::string& why, FaceMesh& mesh, FaceReport& report) {
   cdt_.reset();
   records_.clear();
@@ -1586,18 +1606,19 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
   std::string problem;
   noteCappedEdges(k, edges);
   try {
-    bool ok = true;
+    bool ok = true, cancelled = false;
     if (!cdt_) {
-      ok = buildDomain(k, edges, mesh, problem);
+      ok = buildDomain(k, edges, mesh, problem, cancel, cancelled);
     } else if (boundaryLevel_ < k) {
       ok = refineBoundary(k, edges, mesh, problem);
       if (!ok) {
         repairs_.push_back("rebuilt at level " + std::to_string(k) + ": " + problem);
         repaired_ = true;
         problem.clear();
-        ok = buildDomain(k, edges, mesh, problem);
+        ok = buildDomain(k, edges, mesh, problem, cancel, cancelled);
       }
     }
+    if (cancelled) return abandonBuild(mesh);
     if (!ok && !finalLevel) return deferLevel(k, problem, mesh, report, cancel);
     if (!ok) return useFallback(problem, mesh, report, cancel);
     if (!refinementStopped_ && !refine(k, level, mesh, cancel)) return FaceStatus::kCancelled;

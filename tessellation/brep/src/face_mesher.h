@@ -86,7 +86,14 @@ class FaceMesher {
   // The (u, v) of a boundary point: the pcurve's at edge parameter t, moved to the foot of the edge
   // point p on the surface where the pcurve strays from p.
   gp_Pnt2d boundaryUV(const LoopEdge& le, double t, const gp_Pnt& p) const;
-  bool buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
+  // Builds the domain from level k's edge points. `cancel` is looked at every few thousand points
+  // and segments: once raised, it returns false with `cancelled` set, the build half done
+  // (abandonBuild() discards it).
+  bool buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
+                   const std::atomic<bool>* cancel, bool& cancelled);
+  // Drops a cancelled build: its vertices (appended from base_) and its triangulation. The next
+  // advance() builds the domain again, as an uninterrupted build would have.
+  FaceStatus abandonBuild(FaceMesh& mesh);
   bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
   bool splitSegment(const Occurrence& occ, std::size_t o, std::vector<gp_Pnt2d>& uvs, std::vector<const gp_Pnt*>& ps,
                     std::vector<cet::VertexId>& chain, FaceMesh& mesh, std::string& problem);
