@@ -32,7 +32,7 @@ namespace {
 // A rational cubic from (0, 0, 0) to (30, 0, 0) whose heavy second pole holds it by the chord for
 // most of its parameter; past about 0.9 it hooks out towards its third pole and back, 2.15 from the
 // chord at its farthest (t = 0.982), while every eighth of its parameter lies within 0.65 of it (as
-// a fuzzed edge's last span: weights 476, 136, 1.05 and 0.018 on its poles).
+// a fuzzed edge's last span: weights 476, 136, 1.05 and 0.018 on its last four poles).
 Handle(Geom_BezierCurve) hook() {
   TColgp_Array1OfPnt poles(1, 4);
   poles(1) = gp_Pnt(0, 0, 0), poles(2) = gp_Pnt(10, 0, 0), poles(3) = gp_Pnt(20, 10, 0),
