@@ -25,4 +25,4 @@ cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCETVIEW_SA
 cmake --build build-tsan --parallel 2 --target stream_tests brep_tests
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/stream/stream_tests
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/brep/brep_tests \
-  --gtest_filter='WorkerPool.*:WorkSharing.*:Progressive.*:Isolation.*'
+  --gtest_filter='WorkerPool.*:WorkSharing.*:Progressive.*:Isolation.*-Isolation.AFaceThatFallsBackAfterAnEdgeStoppedSaysBoth'
