@@ -1500,6 +1500,12 @@ std::string FaceMesher::repairsReason(bool withDeferredLevels) const {
 
 FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
   cdt_.reset();
+  // The per-vertex arrays of the build go with its vertices (buildDomain() starts them afresh).
+  normal_.clear();
+  singular_.clear();
+  offset_.clear();
+  points_.clear();
+  occurrences_.clear();
   mesh.positions.resize(3 * std::size_t(base_));
   mesh.normals.resize(3 * std::size_t(base_));
   mesh.uv.resize(2 * std::size_t(base_));
