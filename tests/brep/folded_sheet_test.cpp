@@ -11,15 +11,17 @@
 #include <vector>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
-#include <gp_Ax3.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <gp_Ax3.hxx>
 
 #include "brep/measure.h"
+#include "brep/tessellator.h"
 #include "measure_impl.h"
 #include "test_support.h"
 
@@ -116,6 +118,113 @@ TEST(FoldedSheet, IsMeshedWithoutRefiningAlongTheFold) {
   const FaceQuality final = measureFaces(*t).at(0);
   EXPECT_LE(final.maxCornerAngle, t->angleRad() * (1 + 1e-6));
   EXPECT_LE(final.triangles, 500u) << "3658 when the fold is not recognised";
+}
+
+// A flat sheet 100 square folded over along v = 0.5: x = 100 (2v - 1)^2, y = 100 u (quadratic in
+// v), and with `lift`, y = 100 (u + v) and z = lift v: then Sv is never zero, but at the fold it runs
+// along Su, 100/lift times longer than their cross product (A319's wing tips fold so: Su and Sv
+// 0.005 degrees from parallel there, the normal turning over within 0.01 of a 3-unit triangle).
+// (Not inlined: GCC 12 then warns of an out-of-bounds write inside NCollection_Array2 that is not.)
+[[gnu::noinline]] TopoDS_Face foldedFlat(double lift) {
+  const double x[3] = {100, -100, 100}, y[3] = {0, 50, 100}, z[3] = {0, 0.5 * lift, lift};
+  TColgp_Array2OfPnt poles(1, 2, 1, 3);
+  for (int i = 1; i <= 2; ++i)
+    for (int j = 1; j <= 3; ++j)
+      poles.SetValue(i, j, gp_Pnt(x[j - 1], 100.0 * (i - 1) + (lift > 0 ? y[j - 1] : 0.0), z[j - 1]));
+  TColStd_Array1OfReal uKnots(1, 2), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, 2), vMults(1, 2);
+  uKnots(1) = vKnots(1) = 0, uKnots(2) = vKnots(2) = 1;
+  uMults(1) = uMults(2) = 2, vMults(1) = vMults(2) = 3;
+  return BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 1, 2), 1e-7)
+      .Face();
+}
+
+// Pairs of output vertices at one point and (u, v), one showing each side's normal (a fold vertex
+// and its twin), in face 0's mesh.
+int foldTwins(const Tessellator& t) {
+  const FaceMesh& m = t.faceMesh(0);
+  int twins = 0;
+  for (std::size_t a = 0; a < m.vertexCount(); ++a)
+    for (std::size_t b = a + 1; b < m.vertexCount(); ++b) {
+      if (m.uv[2 * a] != m.uv[2 * b] || m.uv[2 * a + 1] != m.uv[2 * b + 1]) continue;
+      double dot = 0;
+      for (int i = 0; i < 3; ++i) dot += double(m.normals[3 * a + i]) * m.normals[3 * b + i];
+      twins += dot < 0;
+    }
+  return twins;
+}
+
+// No flat triangle across a fold faces both ways: the triangles across it stayed flipped (one on
+// every level of the flat fold here; A319's wing tips 10 on the last level and 12 on coarser ones;
+// Propeller's blade tips, below, 1 and 12). A point on the fold shown once with each side's normal
+// lets the triangles on either side face their own: here the boundary points where the edges turn
+// back with the sheet (FaceMesher::twinSingularCorners), inside a sheet the points where edges
+// across the fold cross it (FaceMesher::foldPoint).
+TEST(FoldedSheet, AFoldGetsAVertexForEachSide) {
+  auto model = test::loadShape(foldedFlat(0), "folded_flat");
+  ASSERT_TRUE(model);
+  test::CheckOptions options;
+  options.selfIntersection = false;  // the sheet lies on itself
+  for (double d : {0.01, 0.001}) {
+    auto t = test::tessellateAndCheck(*model, test::relative(d), options);
+    ASSERT_TRUE(t);
+    EXPECT_GE(foldTwins(*t), 2) << "at " << d * 100 << "%";
+    EXPECT_LE(t->triangleCount(t->lastLevel()), 20u);
+  }
+}
+
+// The sheet lifted by 0.01: its normal turns over within about 1e-4 of v, a hair's width in 3D
+// (0.01), under the finer level's minimum size. Fold points there took side normals from where the
+// turn was complete within the level's angle, up to that angle short of the sides' own, and the
+// angle rule halved edges towards them down to the minimum size (2 flipped and 2 degenerate
+// triangles at 0.1%); they are now taken where the normals have settled, straight across the fold.
+TEST(FoldedSheet, ASheetFoldedWithinAHairsWidthStaysClean) {
+  auto model = test::loadShape(foldedFlat(0.01), "folded_within_a_hair");
+  ASSERT_TRUE(model);
+  test::CheckOptions options;
+  options.selfIntersection = false;
+  for (double d : {0.01, 0.001}) {
+    auto t = test::tessellateAndCheck(*model, test::relative(d), options);
+    ASSERT_TRUE(t);
+    EXPECT_LE(t->triangleCount(t->lastLevel()), 2000u) << "at " << d * 100 << "%";
+  }
+}
+
+// The angle measure at a fold vertex: the sheet lifted by 0.01 has a regular normal at its fold
+// line v = 0.5, the turn's middle (along +x), 90 degrees from both sides' (near -z and +z). A fold
+// vertex there shows one side's normal and its twin the other's; with the mesh's normals the
+// measure takes, along each edge, the surface's normal nearest to the one shown (a step beside the
+// fold), so a triangle on either side reads its side's turn, not the turn's middle.
+TEST(CornerAngle, AFoldVertexReadsEachSidesNormal) {
+  const TopoDS_Face face = foldedFlat(0.01);
+  const SurfaceEval eval(face);
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  // a, c on the side v < 0.5; f and its twin g at (0.5, 0.5); b, d on the side v > 0.5.
+  const double uv[][2] = {{0.3, 0.3}, {0.7, 0.3}, {0.5, 0.5}, {0.5, 0.5}, {0.3, 0.7}, {0.7, 0.7}};
+  std::vector<double> uvs, positions;
+  std::vector<float> normals;
+  for (const auto& q : uv) {
+    const gp_Pnt p = surface->Value(q[0], q[1]);
+    uvs.insert(uvs.end(), {q[0], q[1]});
+    positions.insert(positions.end(), {p.X(), p.Y(), p.Z()});
+  }
+  for (int i = 0; i < 6; ++i) {
+    // The twins show the normals a hundredth of v to their side; the others their own.
+    const double v = i == 2 ? 0.49 : i == 3 ? 0.51 : uv[i][1];
+    gp_Pnt p;
+    gp_Dir n;
+    ASSERT_TRUE(eval.pointNormal(uv[i][0], v, p, n));
+    normals.insert(normals.end(), {float(n.X()), float(n.Y()), float(n.Z())});
+  }
+  const std::uint32_t idx[] = {0, 1, 2, 3, 5, 4};
+  gp_Pnt p;
+  gp_Dir middle, side;
+  ASSERT_TRUE(eval.pointNormal(0.5, 0.5, p, middle));
+  ASSERT_TRUE(eval.pointNormal(0.5, 0.3, p, side));
+  ASSERT_GT(middle.Angle(side), 1.5) << "the fold line's own normal is the turn's middle";
+  EXPECT_GT(measureCornerAngle(eval, positions.data(), uvs.data(), 6, idx, 2, 0.0), 1.5)
+      << "without the normals";
+  EXPECT_LT(measureCornerAngle(eval, positions.data(), uvs.data(), 6, idx, 2, 0.0, normals.data()), 0.01);
 }
 
 // tests/brep/data/fold_into_pole.brep, written by face_fuzz: a flat sheet 1e-3 across from a pole to

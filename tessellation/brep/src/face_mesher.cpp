@@ -45,6 +45,10 @@ constexpr int kMaxPasses = 4096;
 // parametrisation meets a pole, every split made another flipped sliver beside it, down to a
 // thousandth of the tolerance (a fuzzed folded sheet: 2.1 million triangles in 13 s).
 constexpr int kMaxSplitsBelowMinSize = 1024;
+// Fold points (FaceMesher::foldPoint): edges across a fold are split on it down to this fraction of
+// the level's tolerance.
+constexpr double kFoldFloor = 1e-3;
+constexpr int kFoldTrouble = 16;  // see refine()
 // Points one level's refinement of a face may add: the most of this floor and this many times the
 // points the face had before, up to the ceiling. Over the 62 bench models a level adds at most 127k
 // (terrain's level 0) and 36 times its points before; terrain at 0.001% has 617k points in all.
@@ -138,6 +142,97 @@ void FaceMesher::appendVertex(FaceMesh& mesh, double u, double v, const gp_Pnt* 
   offset_.push_back(p ? static_cast<float>(p->Distance(s)) : 0.0f);
 }
 
+void FaceMesher::appendFoldTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& before, const gp_Dir& after) {
+  const std::size_t o = out(v);
+  const double sign = settings_.reversed ? -1.0 : 1.0;
+  normal_[v] = before;
+  for (int i = 0; i < 3; ++i) mesh.normals[3 * o + i] = static_cast<float>(sign * before.Coord(i + 1));
+  appendTwin(mesh, v, after);
+}
+
+void FaceMesher::appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other) {
+  const std::size_t o = out(v);
+  const double sign = settings_.reversed ? -1.0 : 1.0;
+  singular_[v] = 0;  // its normals are the limits, each regular on its side
+  const auto twin = static_cast<std::uint32_t>(mesh.vertexCount());
+  const double p[3] = {mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]};
+  const double uv[2] = {mesh.uv[2 * o], mesh.uv[2 * o + 1]};
+  mesh.positions.insert(mesh.positions.end(), p, p + 3);
+  mesh.uv.insert(mesh.uv.end(), uv, uv + 2);
+  mesh.normals.insert(mesh.normals.end(),
+                      {static_cast<float>(sign * other.X()), static_cast<float>(sign * other.Y()),
+                       static_cast<float>(sign * other.Z())});
+  folds_[v] = FoldVertex{other, twin};
+  // The triangulator vertices not appended yet come after the twin.
+  outShift_.emplace_back(static_cast<cet::VertexId>(normal_.size()),
+                         (outShift_.empty() ? 0 : outShift_.back().second) + 1);
+}
+
+const gp_Dir& FaceMesher::sideNormal(cet::VertexId v, const gp_Vec& side) const {
+  if (folds_.empty()) return normal_[v];
+  const auto it = folds_.find(v);
+  if (it == folds_.end()) return normal_[v];
+  return gp_Vec(it->second.other).Dot(side) > gp_Vec(normal_[v]).Dot(side) ? it->second.other : normal_[v];
+}
+
+std::uint32_t FaceMesher::shownVertex(cet::VertexId v, const gp_Vec& side) const {
+  if (!folds_.empty()) {
+    const auto it = folds_.find(v);
+    if (it != folds_.end() && gp_Vec(it->second.other).Dot(side) > gp_Vec(normal_[v]).Dot(side))
+      return it->second.twin;
+  }
+  return out(v);
+}
+
+gp_Vec FaceMesher::triangleSide(const cet::VertexId v[3], const gp_Pnt P[3]) const {
+  gp_Vec side(0, 0, 0);
+  for (int i = 0; i < 3; ++i)
+    if (!singular_[v[i]] && !isFold(v[i])) side += gp_Vec(normal_[v[i]]);
+  if (side.Magnitude() >= 0.5) return side;
+  return gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
+}
+
+bool FaceMesher::foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angleRad, double& u, double& v,
+                           gp_Dir& before, gp_Dir& after) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  double longest = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (m.isConstrained(t, i)) continue;
+    const cet::VertexId a = m.vertex(t, (i + 1) % 3), b = m.vertex(t, (i + 2) % 3);
+    if (singular_[a] || singular_[b] || isFold(a) || isFold(b) || normal_[a].Dot(normal_[b]) >= 0) continue;
+    const std::size_t oa = out(a), ob = out(b);
+    const double ua = mesh.uv[2 * oa], va = mesh.uv[2 * oa + 1], ub = mesh.uv[2 * ob],
+                 vb = mesh.uv[2 * ob + 1];
+    if (eval_.crossesCrease(ua, va, ub, vb)) continue;
+    const double length = position(mesh, a).Distance(position(mesh, b));
+    if (length <= longest) continue;
+    double at = 0;
+    gp_Dir n0, n1;
+    if (!eval_.findFold(ua, va, ub, vb, normal_[a], normal_[b], angleRad, at, n0, n1)) continue;
+    longest = length;
+    u = ua + at * (ub - ua), v = va + at * (vb - va);
+    before = n0, after = n1;
+  }
+  return longest >= 0;
+}
+
+bool FaceMesher::foldBetween(cet::VertexId a, cet::VertexId b, const FaceMesh& mesh, double angleRad,
+                             double& u, double& v, gp_Dir& before, gp_Dir& after) const {
+  const std::size_t oa = out(a), ob = out(b);
+  const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]),
+               mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
+  const double pu = -0.5 * (mesh.uv[2 * ob + 1] - mesh.uv[2 * oa + 1]),
+               pv = 0.5 * (mesh.uv[2 * ob] - mesh.uv[2 * oa]);
+  gp_Pnt p;
+  gp_Dir n0, n1;
+  if (!eval_.pointNormal(mu - pu, mv - pv, p, n0) || !eval_.pointNormal(mu + pu, mv + pv, p, n1))
+    return false;
+  double at = 0;
+  if (!eval_.findFold(mu - pu, mv - pv, mu + pu, mv + pv, n0, n1, angleRad, at, before, after)) return false;
+  u = mu - pu + 2 * at * pu, v = mv - pv + 2 * at * pv;
+  return true;
+}
+
 // Where an edge's pcurve and its 3D curve disagree (an edge of large tolerance, common in IGES),
 // the pcurve's (u, v) maps to a surface point away from the shared 3D edge point, and the
 // triangles between such boundary points and interior points (which sit at their own (u, v)) fold
@@ -173,6 +268,10 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   normal_.clear();
   singular_.clear();
   offset_.clear();
+  folds_.clear();
+  outShift_.clear();
+  foldPointCount_ = 0;
+  foldsFailed_ = false;
   occurrences_.clear();
   records_.clear();
   touched_.clear();
@@ -501,7 +600,7 @@ bool FaceMesher::edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& devia
 }
 
 gp_Pnt FaceMesher::position(const FaceMesh& mesh, cet::VertexId v) const {
-  const std::size_t o = base_ + v;
+  const std::size_t o = out(v);
   return gp_Pnt(mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]);
 }
 
@@ -510,7 +609,7 @@ FaceMesher::Corners FaceMesher::corners(cet::TriangleId t, const FaceMesh& mesh)
   Corners c;
   for (int i = 0; i < 3; ++i) {
     c.v[i] = m.vertex(t, i);
-    const std::size_t o = base_ + c.v[i];
+    const std::size_t o = out(c.v[i]);
     c.p[i] = position(mesh, c.v[i]);
     c.u[i] = mesh.uv[2 * o], c.w[i] = mesh.uv[2 * o + 1];
   }
@@ -586,6 +685,8 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     // all along the crease or fold: 2.3 million triangles on a fuzzed sheet folded flat).
     double minCos = 1;
     bool acrossCrease = false;
+    // Fold corners show the normal of the triangle's side (sideNormal).
+    const gp_Vec side = folds_.empty() ? gp_Vec(0, 0, 0) : triangleSide(v, P);
     for (int i = 0; i < 3; ++i) {
       const int a = (i + 1) % 3, b = (i + 2) % 3;
       if (eval_.crossesCrease(c.u[a], c.w[a], c.u[b], c.w[b])) {
@@ -593,11 +694,17 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
         continue;
       }
       if (singular_[v[a]] || singular_[v[b]] || m.isConstrained(t, i)) continue;
-      const double cosine = normal_[v[a]].Dot(normal_[v[b]]);
-      if (cosine < 0 && eval_.normalJumps(c.u[a], c.w[a], c.u[b], c.w[b], normal_[v[a]], normal_[v[b]])) {
+      const gp_Dir& na = sideNormal(v[a], side);
+      const gp_Dir& nb = sideNormal(v[b], side);
+      const double cosine = na.Dot(nb);
+      if (cosine < 0 && eval_.normalJumps(c.u[a], c.w[a], c.u[b], c.w[b], na, nb)) {
         acrossCrease = true;
+        if (!isFold(v[a]) && !isFold(v[b])) r.flags |= TriangleRecord::kAcrossFold;
         continue;
       }
+      // Turning over within an edge too short for the angle to split: maybe a fold as sharp (foldPoint).
+      if (cosine < 0 && P[a].Distance(P[b]) <= angleSplit.minSize && !isFold(v[a]) && !isFold(v[b]))
+        r.flags |= TriangleRecord::kAcrossFold;
       if (cosine < minCos) minCos = cosine, r.angleEdge = static_cast<std::uint8_t>(i);
     }
     r.normalCos = static_cast<float>(minCos);
@@ -606,8 +713,10 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     const gp_Vec n = gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
     gp_Vec ref(0, 0, 0);
     for (int i = 0; i < 3; ++i) {
-      if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
-      else r.flags |= TriangleRecord::kPoleCorner;
+      if (singular_[v[i]])
+        r.flags |= TriangleRecord::kPoleCorner;
+      else if (!isFold(v[i]))
+        ref += gp_Vec(normal_[v[i]]);  // a fold corner's normal is its side's
     }
     if (n.Magnitude() <= 1e-12 * longest * longest) {  // the measure's notion of no area (brep/measure.h)
       r.flags |= TriangleRecord::kFlipped;
@@ -752,7 +861,7 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
       if (n.Magnitude() == 0 || len == 0) continue;
       c.n = n.Normalized();
       c.pa = cdt_->point(a), c.pb = cdt_->point(b);
-      const std::size_t oa = base_ + a, ob = base_ + b;
+      const std::size_t oa = out(a), ob = out(b);
       const gp_Vec inward = c.n.Crossed(c.ab / len);
       // Sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
       double w = 0, h = 0;
@@ -875,7 +984,7 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     // Off the middle of the edge being split: for the angle, the edge whose ends' normals differ
     // too much, where any point between the middle thirds or so brings both parts within the angle
     // (the normal turns about evenly); for a flipped triangle, the edge it is bisected on.
-    const std::size_t oa = base_ + m.vertex(t, (angleEdge + 1) % 3), ob = base_ + m.vertex(t, (angleEdge + 2) % 3);
+    const std::size_t oa = out(m.vertex(t, (angleEdge + 1) % 3)), ob = out(m.vertex(t, (angleEdge + 2) % 3));
     const double eu[2] = {mesh.uv[2 * oa], mesh.uv[2 * ob]}, ev[2] = {mesh.uv[2 * oa + 1], mesh.uv[2 * ob + 1]};
     for (double f : {0.65, 0.35, 0.8, 0.2}) {
       const double w[2] = {1 - f, f};
@@ -891,7 +1000,7 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     // A flipped triangle: any of its centroid and free-edge midpoints that keeps the clearance.
     double cu[3], cv[3];
     for (int i = 0; i < 3; ++i) {
-      const std::size_t o = base_ + m.vertex(t, i);
+      const std::size_t o = out(m.vertex(t, i));
       cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
     }
     double tu[4] = {(cu[0] + cu[1] + cu[2]) / 3, 0, 0, 0}, tv[4] = {(cv[0] + cv[1] + cv[2]) / 3, 0, 0, 0};
@@ -927,8 +1036,8 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
   // Slide from the midpoint of one of t's own boundary chords towards the opposite corner.
   for (int own = 0; own < 3; ++own) {
     if (!m.isConstrained(t, own)) continue;
-    const std::size_t oa = base_ + m.vertex(t, (own + 1) % 3), ob = base_ + m.vertex(t, (own + 2) % 3);
-    const std::size_t oc = base_ + m.vertex(t, own);
+    const std::size_t oa = out(m.vertex(t, (own + 1) % 3)), ob = out(m.vertex(t, (own + 2) % 3));
+    const std::size_t oc = out(m.vertex(t, own));
     const double mu = 0.5 * (mesh.uv[2 * oa] + mesh.uv[2 * ob]), mv = 0.5 * (mesh.uv[2 * oa + 1] + mesh.uv[2 * ob + 1]);
     for (double f : {0.5, 0.7}) {
       double uu = mu + f * (mesh.uv[2 * oc] - mu), vv = mv + f * (mesh.uv[2 * oc + 1] - mv);
@@ -1004,14 +1113,15 @@ double FaceMesher::facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, con
   double u[3], w[3];
   gp_Vec ref(0, 0, 0);
   for (int i = 0; i < 3; ++i) {
-    const std::size_t o = base_ + v[i];
+    const std::size_t o = out(v[i]);
     P[i] = position(mesh, v[i]);
     u[i] = mesh.uv[2 * o], w[i] = mesh.uv[2 * o + 1];
-    if (!singular_[v[i]]) ref += gp_Vec(normal_[v[i]]);
+    if (!singular_[v[i]] && !isFold(v[i])) ref += gp_Vec(normal_[v[i]]);
   }
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     if (eval_.crossesCrease(u[i], w[i], u[j], w[j])) return -2;
+    if (isFold(v[i]) || isFold(v[j])) continue;  // a fold corner shows its side's normal
     if (!singular_[v[i]] && !singular_[v[j]] && normal_[v[i]].Dot(normal_[v[j]]) < 0 &&
         eval_.normalJumps(u[i], w[i], u[j], w[j], normal_[v[i]], normal_[v[j]]))
       return -2;
@@ -1022,8 +1132,9 @@ double FaceMesher::facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, con
   // The output's normals as well, poles included (those the measure judges facing by), back on
   // the surface's natural side.
   gp_Vec shown(0, 0, 0);
+  const gp_Vec side = folds_.empty() ? gp_Vec(0, 0, 0) : triangleSide(v, P);
   for (int i = 0; i < 3; ++i) {
-    const std::size_t o = base_ + v[i];
+    const std::size_t o = folds_.empty() ? out(v[i]) : shownVertex(v[i], side);
     shown += gp_Vec(mesh.normals[3 * o], mesh.normals[3 * o + 1], mesh.normals[3 * o + 2]);
   }
   if (settings_.reversed) shown.Reverse();
@@ -1056,7 +1167,8 @@ int FaceMesher::repairingFlip(cet::TriangleId t, const FaceMesh& mesh) const {
     bool fold = false;
     for (int j = 0; j < 4 && !fold; ++j)
       for (int k = j + 1; k < 4 && !fold; ++k)
-        fold = !singular_[q[j]] && !singular_[q[k]] && normal_[q[j]].Dot(normal_[q[k]]) < 0;
+        fold = !singular_[q[j]] && !singular_[q[k]] && !isFold(q[j]) && !isFold(q[k]) &&
+               normal_[q[j]].Dot(normal_[q[k]]) < 0;
     if (fold) continue;
     if (facing(a, b, d, mesh) >= kFoldCos && facing(a, d, c, mesh) >= kFoldCos) return i;
   }
@@ -1081,7 +1193,7 @@ void FaceMesher::ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& 
   double cu[3], cv[3];
   cet::Point2 q[3];
   for (int i = 0; i < 3; ++i) {
-    const std::size_t o = base_ + m.vertex(t, i);
+    const std::size_t o = out(m.vertex(t, i));
     cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
     q[i] = cdt_->point(m.vertex(t, i));
   }
@@ -1164,6 +1276,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   buildChords(mesh);  // the boundary is fixed while the interior refines
   if (refineLevel_ != levelIndex) quadFlips_.clear(), pivotFlips_.clear(), failedSplits_.clear();
   int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
+  int foldTroubleThisCall = 0;
   // Counted from the level's first call: a cancelled level resumes to the mesh an uninterrupted run makes.
   if (refineLevel_ != levelIndex) refineLevel_ = levelIndex, refineStart_ = cdt_->vertexCount();
   const std::size_t start = refineStart_;
@@ -1186,6 +1299,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
     splitTriangles_.clear();
     splitKeys_.clear();
     flips_.clear();
+    foldSplits_.clear();
     int waiting = 0;  // triangles put off to the next pass: a corner taken by another's split
     const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
     nextWork_.clear();
@@ -1251,7 +1365,9 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       const TriangleRecord* r = &records_.at(t);
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1, flipEdge = -1;
-      bool forAngle = false, forDeviation = false;
+      bool forAngle = false, forDeviation = false, forFold = false;
+      double foldU = 0, foldV = 0;
+      gp_Dir foldBefore, foldAfter;
       // Corners off the surface (edge points of an edge that strays from it within its tolerance)
       // hold the triangle that far from it at those corners whatever its size. Within the level's
       // tolerance, the samples inside take a corner's distance only in part, and as the triangles
@@ -1264,6 +1380,17 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       const double off =
           std::max({offset_[m.vertex(t, 0)], offset_[m.vertex(t, 1)], offset_[m.vertex(t, 2)]});
       const double reachable = off <= level.chordal ? std::max(chordal, off) : chordal + off;
+      // Triangles at a fold point that face away while their corners agree: a few are split as any
+      // such triangle is (A319's wing tips, Propeller's blade tips); more, and the fold's line bends
+      // between its points or the sheet folds more than once there, and fold points and splits
+      // beside them fed each other (a fuzzed flat sheet's level: 21 -> 1071 triangles, 671
+      // flipped). Past kFoldTrouble of them on a level, no more fold points on the face, nor such
+      // splits at its fold points.
+      const bool atFold =
+          !folds_.empty() && (isFold(m.vertex(t, 0)) || isFold(m.vertex(t, 1)) || isFold(m.vertex(t, 2)));
+      if (atFold && ((r->flags & TriangleRecord::kFlipped) || r->facetCos < 0) && r->normalCos >= 0 &&
+          ++foldTroubleThisCall > kFoldTrouble)
+        foldsFailed_ = true;
       if (r->deviation > reachable &&
           (r->longest > 1e-3 * level.chordal || (r->flags & TriangleRecord::kCollapsed)) &&
           !withinByTheMeasure(t, mesh, *r, reachable)) {
@@ -1271,13 +1398,30 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         forDeviation = true;
       } else if (r->flags & TriangleRecord::kCollapsed) {
         at = -1;
+      } else if ((r->flags & TriangleRecord::kAcrossFold) && !foldsFailed_ &&
+                 r->longest > kFoldFloor * level.chordal && foldRoom() &&
+                 foldPoint(t, mesh, level.angleRad, foldU, foldV, foldBefore, foldAfter)) {
+        // An edge across a fold of the parametrisation: no flat triangle across it faces both ways
+        // (nor does any split beside the fold end that). A point on the fold, with a normal for each
+        // side (appendFoldTwin), lets the triangles on either side face their own.
+        at = 0;
+        forFold = true;
       } else if (angleSplit.splits(*r)) {
         at = m.isConstrained(t, r->angleEdge) ? 0 : 1 + r->angleEdge;
         forAngle = true;
+        // Between two fold points the fold runs on: the point splitting their edge is one too.
+        const cet::VertexId ea = m.vertex(t, (r->angleEdge + 1) % 3),
+                            eb = m.vertex(t, (r->angleEdge + 2) % 3);
+        if (at > 0 && isFold(ea) && isFold(eb) && !foldsFailed_ && foldRoom() &&
+            foldBetween(ea, eb, mesh, level.angleRad, foldU, foldV, foldBefore, foldAfter)) {
+          at = 0;
+          forAngle = false, forFold = true;
+        }
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && !allSingular(t) &&
                  !inLineOnChordIntoPole(t, *r) &&
-                 (r->longest > minSize || (splitsBelowMinSize(*r) && r->longest > 1e-3 * level.chordal &&
-                                           belowMinSize < kMaxSplitsBelowMinSize))) {
+                 (r->longest > minSize ||
+                  (splitsBelowMinSize(*r) && !(atFold && foldsFailed_) && r->longest > 1e-3 * level.chordal &&
+                   belowMinSize < kMaxSplitsBelowMinSize))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
         // thinner ones), unless flipping an edge puts them right (repairingFlip).
@@ -1323,11 +1467,12 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       }
       double cu[3], cv[3];
       for (int i = 0; i < 3; ++i) {
-        const std::size_t o = base_ + m.vertex(t, i);
+        const std::size_t o = out(m.vertex(t, i));
         cu[i] = mesh.uv[2 * o], cv[i] = mesh.uv[2 * o + 1];
       }
       double u = 0, v = 0;
       eval_.blend(3, b, cu, cv, u, v);
+      if (forFold) u = foldU, v = foldV;
       // Too far from a surface across a sharp knot: the worst sample sits by the knot's line, where
       // the surface bends, and a point beside it leaves the bend cut by the triangles on either side
       // and slivers along it (a fuzzed band: 234 triangles flipped beside the knot). A point on the
@@ -1343,9 +1488,11 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // as its apex, and the triangle they make on the chord is flipped as well, as long as the
       // chord itself: a cascade towards the boundary that no size test stops.
       const bool largeFlipped = flipped && r->longest > level.chordal && !onChord(t);
-      bool override = tooFar || largeFlipped;
-      const bool safe =
-          (r->flags & TriangleRecord::kCollapsed) || safeSplit(t, u, v, mesh, flipped, forAngle, at - 1);
+      // A fold point stays on the fold: taken where it keeps the chords' clearance, else not at all.
+      bool override = !forFold && (tooFar || largeFlipped);
+      const bool safe = forFold ? clearOfChords(u, v, true)
+                                : (r->flags & TriangleRecord::kCollapsed) ||
+                                      safeSplit(t, u, v, mesh, flipped, forAngle, at - 1);
       // Overriding the clearance on the refinement's reading alone: where its few Gauss-Newton steps
       // stop short of the foot (a parametrisation far from uniform, its speed across a side 1e-4 of
       // that along it), the reading stays over the tolerance however near the chord the point comes,
@@ -1355,8 +1502,8 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // decides such an override, against the margin the refinement aims at rather than the
       // tolerance itself (against the tolerance, a fuzzed face's last level read 1.0003x); asked
       // only for splits that break the clearance, so seldom.
-      if (!safe && tooFar && !largeFlipped && !exactDeviation_ && !(r->flags & TriangleRecord::kCollapsed) &&
-          measuredWithin(t, mesh, reachable)) {
+      if (!safe && !forFold && tooFar && !largeFlipped && !exactDeviation_ &&
+          !(r->flags & TriangleRecord::kCollapsed) && measuredWithin(t, mesh, reachable)) {
         override = false;
         if (settings_.trace)
           std::fprintf(stderr, "pass %d: triangle %u (deviation %g) within by the measure: split dropped\n",
@@ -1382,6 +1529,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       const cet::Point2 q = scaled(u, v);
       if (!supported(q)) continue;
       for (int i = 0; i < 3; ++i) touched_[m.vertex(t, i)] = stamp;
+      if (forFold) foldSplits_.push_back(FoldSplit{points_.size(), foldBefore, foldAfter}), ++foldPointCount_;
       uvs.emplace_back(u, v);
       points_.push_back(q);
       splitTriangles_.push_back(t);
@@ -1426,6 +1574,10 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       const std::uint32_t i = inputOf[id - countBefore];
       if (i != UINT32_MAX) {
         appendVertex(mesh, uvs[i].X(), uvs[i].Y(), nullptr);
+        const auto fold = std::lower_bound(foldSplits_.begin(), foldSplits_.end(), std::size_t{i},
+                                           [](const FoldSplit& f, std::size_t x) { return f.point < x; });
+        if (fold != foldSplits_.end() && fold->point == i)
+          appendFoldTwin(mesh, id, fold->before, fold->after);
       } else {
         const cet::Point2 q = cdt_->point(id);
         double u = 0, v = 0;
@@ -1446,6 +1598,38 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   return true;
 }
 
+void FaceMesher::twinSingularCorners(FaceMesh& mesh) {
+  const cet::CetMesh& m = cdt_->mesh();
+  const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
+  for (cet::TriangleId t = 0; t < triangles; ++t) {
+    if (m.isGhost(t) || m.isOutside(t)) continue;
+    const cet::VertexId v[3] = {m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2)};
+    if (!singular_[v[0]] && !singular_[v[1]] && !singular_[v[2]]) continue;
+    const gp_Pnt P[3] = {position(mesh, v[0]), position(mesh, v[1]), position(mesh, v[2])};
+    const gp_Vec side = triangleSide(v, P);
+    if (!(side.Magnitude() > 0)) continue;
+    double cu = 0, cv = 0;
+    for (int i = 0; i < 3; ++i) cu += mesh.uv[2 * out(v[i])] / 3, cv += mesh.uv[2 * out(v[i]) + 1] / 3;
+    for (int i = 0; i < 3; ++i) {
+      if (!singular_[v[i]] || gp_Vec(normal_[v[i]]).Dot(side) >= 0) continue;
+      // The normal on the triangle's side: the first regular one on the way to its centroid.
+      const std::size_t o = out(v[i]);
+      const double u = mesh.uv[2 * o], w = mesh.uv[2 * o + 1];
+      if (eval_.pinches(u, w, cu - u, cv - w, side))
+        continue;  // a pole: its row has one point, not two sides
+      for (int k = SurfaceEval::kFoldBisections; k >= SurfaceEval::kFoldReach; --k) {
+        const double e = std::ldexp(1.0, -k);
+        gp_Pnt p;
+        gp_Dir n;
+        if (!eval_.pointNormal(u + e * (cu - u), w + e * (cv - w), p, n) || gp_Vec(n).Dot(side) <= 0)
+          continue;
+        appendTwin(mesh, v[i], n);
+        break;
+      }
+    }
+  }
+}
+
 std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   const cet::CetMesh& m = cdt_->mesh();
   std::vector<std::uint32_t> indices;
@@ -1459,7 +1643,13 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   };
   for (cet::TriangleId t = 0; t < triangles; ++t) {
     if (m.isGhost(t) || m.isOutside(t)) continue;
-    const std::uint32_t a = base_ + m.vertex(t, 0), b = base_ + m.vertex(t, 1), c = base_ + m.vertex(t, 2);
+    const cet::VertexId v[3] = {m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2)};
+    std::uint32_t a = out(v[0]), b = out(v[1]), c = out(v[2]);
+    if (!folds_.empty() && (isFold(v[0]) || isFold(v[1]) || isFold(v[2]))) {
+      const gp_Pnt P[3] = {position(mesh, v[0]), position(mesh, v[1]), position(mesh, v[2])};
+      const gp_Vec side = triangleSide(v, P);
+      a = shownVertex(v[0], side), b = shownVertex(v[1], side), c = shownVertex(v[2], side);
+    }
     if (same(a, b) || same(b, c) || same(a, c)) continue;  // collapsed on a pole, a singular row or a UV gap
     if (settings_.reversed) {
       indices.insert(indices.end(), {a, c, b});
@@ -1504,6 +1694,8 @@ FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
   normal_.clear();
   singular_.clear();
   offset_.clear();
+  folds_.clear();
+  outShift_.clear();
   points_.clear();
   occurrences_.clear();
   mesh.positions.resize(3 * std::size_t(base_));
@@ -1632,6 +1824,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     return useFallback(std::string("OpenCASCADE failed while meshing: ") + e.GetMessageString(), mesh, report,
                        cancel);
   }
+  twinSingularCorners(mesh);
   std::vector<std::uint32_t> indices = snapshot(mesh);
   if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report, cancel);
   if (!strayReported_) {

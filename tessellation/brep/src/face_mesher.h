@@ -9,6 +9,7 @@
 // nothing is ever rebuilt per level.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -290,6 +291,74 @@ class FaceMesher {
   const SurfaceEval& eval_;
   std::unique_ptr<cet::Triangulator> cdt_;
   std::uint32_t base_ = 0;  // output id of triangulator vertex 0
+  // Fold vertices: points refine() puts on a fold of the surface's parametrisation, a line where
+  // Su x Sv passes through zero and the normal reverses, or a turn as sharp (SurfaceEval::findFold). No one
+  // normal is right there: each has two output vertices at the one point, out(v) with normal_[v] (the
+  // normal's limit on one side) and `twin` with `other` (its limit on the other side), and each
+  // triangle shows the one of its own side (sideNormal; snapshot).
+  struct FoldVertex {
+    gp_Dir other;
+    std::uint32_t twin = 0;
+  };
+  std::unordered_map<cet::VertexId, FoldVertex> folds_;
+  bool isFold(cet::VertexId v) const { return !folds_.empty() && folds_.count(v) != 0; }
+  // Fold vertex v's normal (else normal_[v]) on the side of `side`: the limit nearer to it.
+  const gp_Dir& sideNormal(cet::VertexId v, const gp_Vec& side) const;
+  // The output vertex that corner v of a triangle whose surface normal is `side` shows.
+  std::uint32_t shownVertex(cet::VertexId v, const gp_Vec& side) const;
+  // The side whose normals a triangle's fold corners show: its other corners' mean normal where
+  // they agree (|sum| of at least half a unit), else the facet's normal (in the surface's natural
+  // orientation).
+  gp_Vec triangleSide(const cet::VertexId v[3], const gp_Pnt P[3]) const;
+  // A twin is appended after the vertices so far, so the output ids of the triangulator vertices
+  // appended later move on by one: from outShift_[i].first on, by outShift_[i].second.
+  std::vector<std::pair<cet::VertexId, std::uint32_t>> outShift_;
+  std::uint32_t out(cet::VertexId v) const {
+    if (outShift_.empty() || v < outShift_.front().first) return base_ + v;
+    const auto after = std::upper_bound(
+        outShift_.begin(), outShift_.end(), v,
+        [](cet::VertexId x, const std::pair<cet::VertexId, std::uint32_t>& e) { return x < e.first; });
+    return base_ + v + std::prev(after)->second;
+  }
+  // Makes triangulator vertex v a fold vertex showing `before` itself, with a twin showing `after`.
+  void appendFoldTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& before, const gp_Dir& after);
+  // Appends a twin of triangulator vertex v showing `other` (at the end of the mesh: the triangulator
+  // vertices not appended yet come after it).
+  void appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other);
+  // Vertices without a first-derivative normal on a fold (a boundary point where the edge turns
+  // back with the sheet): where a triangle's side faces away from one's normal, it becomes a fold
+  // vertex whose twin shows the normal on that side (the first regular one on the way to the
+  // triangle's centroid). Run before each snapshot.
+  void twinSingularCorners(FaceMesh& mesh);
+  // Where triangle t's free edge between regular corners crosses a fold (SurfaceEval::findFold; the
+  // longest such edge): the fold point's (u, v) and the normals either side. False where none does.
+  bool foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angleRad, double& u, double& v,
+                 gp_Dir& before, gp_Dir& after) const;
+  // The fold point near the middle of the edge between fold vertices a and b: on a segment across
+  // the edge through its middle, as long as the edge (SurfaceEval::findFold). Splitting such an edge
+  // at its middle, for the angle along the fold, made a plain vertex there whose normal is the
+  // turn's middle, and the angle rule then halved edges towards it down to the minimum size.
+  bool foldBetween(cet::VertexId a, cet::VertexId b, const FaceMesh& mesh, double angleRad, double& u,
+                   double& v, gp_Dir& before, gp_Dir& after) const;
+  // Fold points requested by a refinement pass (FoldSplit::point indexes points_).
+  struct FoldSplit {
+    std::size_t point = 0;
+    gp_Dir before, after;
+  };
+  std::vector<FoldSplit> foldSplits_;
+  bool foldsFailed_ = false;  // fold points left triangles beside them facing away: no more on this face
+  // Fold points made on this face (since its domain was built), at most kFoldPointFloor and one in
+  // kFoldPointShare of its points: a fold that one clean line of points settles takes a few (A319's
+  // wing tips 4, Propeller's blade tips 1 or 2 per face). A bound on folds that do not settle: a
+  // fuzzed sheet folded flat at a knot line, where each fold point made new edges across the fold
+  // beside it, took 37320 triangles (226 without fold points), 7002 with this bound; what ended it
+  // was the parameters' resolution (SurfaceEval::kFoldResolution).
+  int foldPointCount_ = 0;
+  static constexpr int kFoldPointFloor = 8;
+  static constexpr std::size_t kFoldPointShare = 64;
+  bool foldRoom() const {
+    return foldPointCount_ < kFoldPointFloor + static_cast<int>(cdt_->vertexCount() / kFoldPointShare);
+  }
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
   double uPeriod_ = 0, vPeriod_ = 0;  // the surface's periods (0: not periodic that way)
   std::vector<std::uint8_t> singular_;  // normal not defined by first derivatives (pole, apex)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include <Standard_Failure.hxx>
@@ -214,25 +215,59 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
   return worst;
 }
 
-double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv, std::size_t vertices,
-                          const std::uint32_t* idx, std::size_t triangles, double minLength) {
+double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv,
+                          std::size_t vertices, const std::uint32_t* idx, std::size_t triangles,
+                          double minLength, const float* normals) {
   std::vector<gp_Dir> normal(vertices);
   std::vector<char> regular(vertices, 0);
   for (std::size_t v = 0; v < vertices; ++v) {
     gp_Pnt p;
     regular[v] = eval.pointNormal(uv[2 * v], uv[2 * v + 1], p, normal[v]) ? 1 : 0;
   }
+  // Vertices at one (u, v) and point with another: a fold vertex and its twin (FaceMesh::normals).
+  std::vector<char> twinned(vertices, 0);
+  if (normals) {
+    std::vector<std::uint32_t> order(vertices);
+    for (std::uint32_t v = 0; v < vertices; ++v) order[v] = v;
+    const auto key = [&](std::uint32_t v) {
+      return std::make_tuple(uv[2 * v], uv[2 * v + 1], positions[3 * v], positions[3 * v + 1],
+                             positions[3 * v + 2]);
+    };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return key(x) < key(y); });
+    for (std::size_t i = 1; i < vertices; ++i)
+      if (key(order[i - 1]) == key(order[i])) twinned[order[i - 1]] = twinned[order[i]] = 1;
+  }
+  // A twinned vertex's normal seen along edge (a, b): of the surface's normals at steps towards b
+  // (2^-30 of the edge to an eighth), the nearest to the one it shows (as a line).
+  const auto normalTowards = [&](std::uint32_t a, std::uint32_t b, gp_Dir& n) {
+    n = normal[a];
+    if (!twinned[a]) return regular[a] != 0;
+    const gp_Vec shown(normals[3 * a], normals[3 * a + 1], normals[3 * a + 2]);
+    double best = -1;
+    for (int k = 30; k >= 3; --k) {
+      const double e = std::ldexp(1.0, -k);
+      gp_Pnt p;
+      gp_Dir step;
+      if (!eval.pointNormal(uv[2 * a] + e * (uv[2 * b] - uv[2 * a]),
+                            uv[2 * a + 1] + e * (uv[2 * b + 1] - uv[2 * a + 1]), p, step))
+        continue;
+      const double match = std::abs(shown.Dot(gp_Vec(step)));
+      if (match > best) best = match, n = step;
+    }
+    return best >= 0 || regular[a] != 0;
+  };
   double worst = 0;
   for (std::size_t t = 0; t < triangles; ++t) {
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t a = idx[3 * t + i], b = idx[3 * t + (i + 1) % 3];
-      if (!regular[a] || !regular[b]) continue;
+      gp_Dir na, nb;
+      if (!normalTowards(a, b, na) || !normalTowards(b, a, nb)) continue;
       const gp_Pnt pa(positions[3 * a], positions[3 * a + 1], positions[3 * a + 2]);
       const gp_Pnt pb(positions[3 * b], positions[3 * b + 1], positions[3 * b + 2]);
       if (pa.Distance(pb) < minLength) continue;
       if (eval.crossesCrease(uv[2 * a], uv[2 * a + 1], uv[2 * b], uv[2 * b + 1])) continue;
-      if (eval.normalJumps(uv[2 * a], uv[2 * a + 1], uv[2 * b], uv[2 * b + 1], normal[a], normal[b])) continue;
-      worst = std::max(worst, normal[a].Angle(normal[b]));
+      if (eval.normalJumps(uv[2 * a], uv[2 * a + 1], uv[2 * b], uv[2 * b + 1], na, nb)) continue;
+      worst = std::max(worst, na.Angle(nb));
     }
   }
   return worst;
@@ -316,8 +351,8 @@ std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned 
       SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
       q.maxDeviation = measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data(), q.triangles,
                                         levelTolerance(t, level));
-      q.maxCornerAngle = measureCornerAngle(eval, m.positions.data(), m.uv.data(), m.vertexCount(), idx.data(),
-                                            q.triangles, 0.1 * t.chordal());
+      q.maxCornerAngle = measureCornerAngle(eval, m.positions.data(), m.uv.data(), m.vertexCount(),
+                                            idx.data(), q.triangles, 0.1 * t.chordal(), m.normals.data());
     } catch (const Standard_Failure&) {
       q.maxDeviation = INFINITY;
       q.maxCornerAngle = INFINITY;

@@ -26,9 +26,14 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
 // DESIGN.md's angular deflection. Edges shorter than `minLength` (the size below which neither
 // mesher applies the angle), with an end where the normal is undefined (a pole, an apex), across a
 // crease of the surface or a fold of its parametrisation (where the normal jumps: no refinement
-// brings the two sides' normals together) are not counted.
-double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv, std::size_t vertices,
-                          const std::uint32_t* idx, std::size_t triangles, double minLength);
+// brings the two sides' normals together) are not counted. With the mesh's `normals` (xyz per
+// vertex), a vertex that shares its (u, v) and point with another (a fold vertex and its twin, one
+// per side of the fold: FaceMesher) has, along each edge, the normal that the surface has a small
+// step along it and that vertex shows (the normal's limit on that side); without them, or none
+// such, the normal at its (u, v) (at a fold, the middle of the turn).
+double measureCornerAngle(const SurfaceEval& eval, const double* positions, const double* uv,
+                          std::size_t vertices, const std::uint32_t* idx, std::size_t triangles,
+                          double minLength, const float* normals = nullptr);
 
 // How a triangle (corner: its three vertex indices) faces against its corners' unit surface normals
 // (xyz per vertex): degenerate (no area: |cross| <= 1e-12 * longest edge squared), facing (along

@@ -568,6 +568,121 @@ bool SurfaceEval::normalJumps(double ua, double va, double ub, double vb, const 
   return true;
 }
 
+bool SurfaceEval::findFold(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb,
+                           double angleRad, double& at, gp_Dir& before, gp_Dir& after) const {
+  if (na.Dot(nb) >= 0) return false;
+  // Too short for the parameters' resolution to locate the fold on it (a fuzzed face 1e-3 wide at
+  // u, v = -1000, where the bisection's last steps fall below the coordinates' rounding and its
+  // points were placed by noise: its fold points fed refinement beside them, 226 -> 37320
+  // triangles).
+  const double magnitude = std::max({std::abs(ua), std::abs(va), std::abs(ub), std::abs(vb)});
+  if (std::hypot(ub - ua, vb - va) < kFoldResolution * magnitude) return false;
+  const gp_Vec towardsA = gp_Vec(na) - gp_Vec(nb);
+  gp_Pnt p;
+  gp_Dir n;
+  // The middle of the turn: where the normal is as near to nb as to na (positive towards a).
+  double t0 = 0, t1 = 1;
+  for (int k = 0; k < kFoldBisections; ++k) {
+    const double t = 0.5 * (t0 + t1);
+    if (!regularNormal(ua + t * (ub - ua), va + t * (vb - va), p, n)) {  // Su x Sv vanishes: the fold itself
+      t0 = t1 = t;
+      break;
+    }
+    (gp_Vec(n).Dot(towardsA) > 0 ? t0 : t1) = t;
+  }
+  at = 0.5 * (t0 + t1);
+  // A fold of the parametrisation: Su and Sv (nearly) parallel there, or the area element (nearly)
+  // vanishing against the ends'. A sheet bending over as sharply with its parametrisation regular
+  // (occ/terrain's rim, the bottle's neck: sines 0.9-1, area elements 0.3 of the ends' or more) is
+  // left to the angle, which refines it.
+  {
+    gp_Vec du, dv;
+    d1(ua + at * (ub - ua), va + at * (vb - va), p, du, dv);
+    const double area = du.Crossed(dv).Magnitude();
+    const bool parallel = area < kFoldSine * du.Magnitude() * dv.Magnitude();
+    d1(ua, va, p, du, dv);
+    const double areaA = du.Crossed(dv).Magnitude();
+    d1(ub, vb, p, du, dv);
+    const double areaB = du.Crossed(dv).Magnitude();
+    if (!parallel && !(area < kFoldArea * std::max(areaA, areaB))) return false;
+  }
+  if (pinches(ua + at * (ub - ua), va + at * (vb - va), ub - ua, vb - va, gp_Vec(na) - gp_Vec(nb)))
+    return false;
+  // The normals shown on either side of the fold: the nearest pair of points either side of it
+  // between which the normal makes the segment's whole turn (within the angle), a step along the
+  // derivative's kernel (straight across the fold: along a segment that crosses it at a slant, the
+  // turn spreads along it), else along the segment; from there further out, where they have settled
+  // (each within kSettledRad of the normal twice as far out), at most an eighth of the segment's
+  // length away. At the turn's end they can still be most of the angle from the side's (a coarse
+  // level's angle is wide), and the angle rule then halved edges towards the fold point without end.
+  const double turn = na.Angle(nb) - angleRad;
+  const double fu = ua + at * (ub - ua), fv = va + at * (vb - va), length = std::hypot(ub - ua, vb - va);
+  double ku = 0, kv = 0;
+  const bool across = kernel(fu, fv, ku, kv);
+  for (const bool alongKernel : {true, false}) {
+    if (alongKernel && !across) continue;
+    const double stepU = alongKernel ? ku * length : ub - ua, stepV = alongKernel ? kv * length : vb - va;
+    // The normals at 2^-k of (stepU, stepV) before and after the fold point (at the segment's ends, theirs).
+    const auto normalsAt = [&](int k, gp_Dir& n0, gp_Dir& n1) {
+      const double d = std::ldexp(1.0, -k);
+      n0 = na, n1 = nb;
+      if (alongKernel)
+        return regularNormal(fu - d * stepU, fv - d * stepV, p, n0) &&
+               regularNormal(fu + d * stepU, fv + d * stepV, p, n1);
+      const double ta = std::max(0.0, at - d), tb = std::min(1.0, at + d);
+      return (ta <= 0 || regularNormal(ua + ta * (ub - ua), va + ta * (vb - va), p, n0)) &&
+             (tb >= 1 || regularNormal(ua + tb * (ub - ua), va + tb * (vb - va), p, n1));
+    };
+    for (int k = kFoldBisections; k >= kFoldReach; --k) {
+      gp_Dir n0, n1;
+      if (!normalsAt(k, n0, n1) || n0.Angle(n1) < turn) continue;
+      for (; k > kFoldReach; --k) {
+        gp_Dir m0, m1;
+        if (!normalsAt(k - 1, m0, m1)) break;
+        if (n0.Angle(m0) <= kSettledRad && n1.Angle(m1) <= kSettledRad) break;
+        n0 = m0, n1 = m1;
+      }
+      const bool swap = n0.Dot(na) - n0.Dot(nb) < n1.Dot(na) - n1.Dot(nb);  // the kernel may point towards a
+      before = swap ? n1 : n0, after = swap ? n0 : n1;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool SurfaceEval::kernel(double u, double v, double& ku, double& kv, double* smallerOverLarger) const {
+  gp_Pnt p;
+  gp_Vec du, dv;
+  d1(u, v, p, du, dv);
+  const double a = du.SquareMagnitude(), b = du.Dot(dv), c = dv.SquareMagnitude();
+  const double smaller = std::max(0.0, 0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b));
+  ku = b, kv = smaller - a;  // (G - smaller I) k = 0
+  if (std::abs(ku) + std::abs(kv) <= 1e-300) ku = c - smaller, kv = -b;
+  const double n = std::hypot(ku, kv);
+  if (!(n > 1e-300)) return false;
+  ku /= n, kv /= n;
+  if (smallerOverLarger) *smallerOverLarger = std::sqrt(smaller / std::max(a + c - smaller, 1e-300));
+  return true;
+}
+
+bool SurfaceEval::pinches(double u, double v, double du, double dv, const gp_Vec& side) const {
+  // The signed area element, positive on the side of `side`.
+  const auto area = [&](double x, double y) {
+    gp_Pnt p;
+    gp_Vec su1, sv1;
+    d1(x, y, p, su1, sv1);
+    return su1.Crossed(sv1).Dot(side);
+  };
+  double ku = 0, kv = 0, ratio = 1;
+  if (!kernel(u, v, ku, kv, &ratio)) return false;
+  const double step = 1e-3 * std::hypot(du, dv);
+  ku *= step, kv *= step;
+  const double eu = -kv, ev = ku;  // across the kernel, as far
+  const double along = std::abs(area(u + ku, v + kv)) + std::abs(area(u - ku, v - kv));
+  const double across = std::abs(area(u + eu, v + ev)) + std::abs(area(u - eu, v - ev));
+  return along < kPinch * across && ratio < kCollapsed;
+}
+
 bool SurfaceEval::pointNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const {
   if (regularNormal(u, v, p, n)) return true;
   gp_Vec du, dv;

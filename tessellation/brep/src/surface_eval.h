@@ -135,6 +135,37 @@ class SurfaceEval {
   // False where a pole lies between. Thread-safe where concurrentSafe().
   bool normalJumps(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb) const;
   static constexpr int kJumpBisections = 24;
+  // Whether the normal reverses, on the UV segment from (ua, va) to (ub, vb) whose ends' normals na
+  // and nb oppose, within an eighth of the segment (2^-kFoldReach) about one point where the
+  // parametrisation folds: Su x Sv through zero, or near it (A319's wing tip turns over within 0.01
+  // of its 3-unit triangles, Su and Sv 0.005 degrees from parallel there; Propeller's blade tips). `at` is
+  // the middle of the turn (the segment's parameter, 0 at a), where the normal is as near to na as to nb;
+  // `before` and `after` the normals either side of it between which the turn is complete, up to
+  // angleRad. False where the turn spreads wider (the surface bends) or no such point is found.
+  bool findFold(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb,
+                double angleRad, double& at, gp_Dir& before, gp_Dir& after) const;
+  static constexpr int kFoldBisections = 30;
+  static constexpr double kFoldSine = 0.1;   // a fold: Su and Sv within 6 degrees of parallel at the turn,
+  static constexpr double kFoldArea = 0.05;  // or |Su x Sv| below this fraction of the larger of the ends'
+
+  static constexpr int kFoldReach = 3;
+  static constexpr double kSettledRad = 0.5 * M_PI / 180;
+  // A segment shorter than this times its largest coordinate is not searched: its 2^-kFoldBisections
+  // steps would come within a few units of rounding of the coordinates.
+  static constexpr double kFoldResolution = 1e-6;
+  // Whether the singular point (u, v) lies on a line of the parameters that collapses to one point
+  // (a pinch: a pole's row, a ruled sheet whose rows cross) rather than on a fold. The line runs
+  // along the kernel of the derivative (the (u, v) direction it maps to nothing) at a pinch and
+  // across it at a fold: the area element (|Su x Sv|, signed by `side`) stays near zero a step along
+  // the kernel and grows a step across it at a pinch, and the other way round at a fold. The step
+  // is 1e-3 of (du, dv)'s length. And the line collapses: the derivative along the kernel is below
+  // kCollapsed of the one across it (Propeller's blade tips fold along a line of the kernel, but
+  // one that runs along the tip at 0.015 of the speed across: their fold points are apart). Fold
+  // points on a pinch would all be one 3D point, no triangle between two of them with area (a
+  // ruled sheet took 864 of them on its first level).
+  bool pinches(double u, double v, double du, double dv, const gp_Vec& side) const;
+  static constexpr double kPinch = 0.1;
+  static constexpr double kCollapsed = 1e-4;
 
   double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // the face's parameter box (from its pcurves)
 
@@ -150,6 +181,10 @@ class SurfaceEval {
   bool collapsed() const;
 
  private:
+  // The unit (u, v) direction that the derivative at (u, v) maps nearest to zero (the smaller
+  // eigenvector of the Gram matrix of Su and Sv), and the ratio of its image's length to the
+  // largest image of a unit direction. False where the derivative vanishes.
+  bool kernel(double u, double v, double& ku, double& kv, double* smallerOverLarger = nullptr) const;
   // pointNormal's first-derivative normal; false (n unset) where it is not defined.
   bool regularNormal(double u, double v, gp_Pnt& p, gp_Dir& n) const;
   double projectFrom(const gp_Pnt& m, double& u, double& v, int maxIter, double* start, bool& clamped,

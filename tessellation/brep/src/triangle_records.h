@@ -26,7 +26,8 @@ struct TriangleRecord {
   std::uint8_t worstSample = 0;                // 0 centroid, 1 + i the midpoint of edge i (opposite corner i)
   std::uint8_t angleEdge = 0;                  // edge whose ends' normals differ most
   std::uint8_t longestFreeEdge = 3;            // longest unconstrained edge (3: none)
-  std::uint8_t flags = 0;  // kFlipped | kCollapsed | kUnmeasured | kPoleCorner | kInLine | kMeasureChordal
+  std::uint8_t flags =
+      0;  // kFlipped | kCollapsed | kUnmeasured | kPoleCorner | kInLine | kMeasureChordal | kAcrossFold
   static constexpr std::uint8_t kFlipped = 1;  // no area, or no usable corner normal to compare
   static constexpr std::uint8_t kCollapsed = 2;   // two corners share a 3D point (pole, gap): dropped
   static constexpr std::uint8_t kUnmeasured = 4;  // the angle split it: no chordal samples taken
@@ -34,6 +35,8 @@ struct TriangleRecord {
   static constexpr std::uint8_t kInLine = 16;     // flipped as corners in line through a pole (its facet is noise)
   static constexpr std::uint8_t kMeasureChordal =
       32;  // unmeasured, but its angle split was dropped: measure it
+  // A free edge between regular corners crosses a fold of the parametrisation (FaceMesher::foldPoint).
+  static constexpr std::uint8_t kAcrossFold = 64;
 
   bool matches(cet::VertexId a, cet::VertexId b, cet::VertexId c) const {
     return v[0] == a && v[1] == b && v[2] == c;
