@@ -147,13 +147,13 @@ void FaceMesher::appendFoldTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& b
   const double sign = settings_.reversed ? -1.0 : 1.0;
   normal_[v] = before;
   for (int i = 0; i < 3; ++i) mesh.normals[3 * o + i] = static_cast<float>(sign * before.Coord(i + 1));
-  appendTwin(mesh, v, after);
+  singular_[v] = 0;  // its normals are the limits, each regular on its side
+  folds_[v] = FoldVertex{after, appendTwin(mesh, v, after)};
 }
 
-void FaceMesher::appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other) {
+std::uint32_t FaceMesher::appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other) {
   const std::size_t o = out(v);
   const double sign = settings_.reversed ? -1.0 : 1.0;
-  singular_[v] = 0;  // its normals are the limits, each regular on its side
   const auto twin = static_cast<std::uint32_t>(mesh.vertexCount());
   const double p[3] = {mesh.positions[3 * o], mesh.positions[3 * o + 1], mesh.positions[3 * o + 2]};
   const double uv[2] = {mesh.uv[2 * o], mesh.uv[2 * o + 1]};
@@ -162,10 +162,10 @@ void FaceMesher::appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other
   mesh.normals.insert(mesh.normals.end(),
                       {static_cast<float>(sign * other.X()), static_cast<float>(sign * other.Y()),
                        static_cast<float>(sign * other.Z())});
-  folds_[v] = FoldVertex{other, twin};
   // The triangulator vertices not appended yet come after the twin.
   outShift_.emplace_back(static_cast<cet::VertexId>(normal_.size()),
                          (outShift_.empty() ? 0 : outShift_.back().second) + 1);
+  return twin;
 }
 
 const gp_Dir& FaceMesher::sideNormal(cet::VertexId v, const gp_Vec& side) const {
@@ -176,9 +176,10 @@ const gp_Dir& FaceMesher::sideNormal(cet::VertexId v, const gp_Vec& side) const 
 }
 
 std::uint32_t FaceMesher::shownVertex(cet::VertexId v, const gp_Vec& side) const {
-  if (!folds_.empty()) {
-    const auto it = folds_.find(v);
-    if (it != folds_.end() && gp_Vec(it->second.other).Dot(side) > gp_Vec(normal_[v]).Dot(side))
+  for (const auto* twins : {&folds_, &singularTwins_}) {
+    if (twins->empty()) continue;
+    const auto it = twins->find(v);
+    if (it != twins->end() && gp_Vec(it->second.other).Dot(side) > gp_Vec(normal_[v]).Dot(side))
       return it->second.twin;
   }
   return out(v);
@@ -269,6 +270,7 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   singular_.clear();
   offset_.clear();
   folds_.clear();
+  singularTwins_.clear();
   outShift_.clear();
   foldPointCount_ = 0;
   foldsFailed_ = false;
@@ -1611,7 +1613,7 @@ void FaceMesher::twinSingularCorners(FaceMesh& mesh) {
     double cu = 0, cv = 0;
     for (int i = 0; i < 3; ++i) cu += mesh.uv[2 * out(v[i])] / 3, cv += mesh.uv[2 * out(v[i]) + 1] / 3;
     for (int i = 0; i < 3; ++i) {
-      if (!singular_[v[i]] || gp_Vec(normal_[v[i]]).Dot(side) >= 0) continue;
+      if (!singular_[v[i]] || singularTwins_.count(v[i]) || gp_Vec(normal_[v[i]]).Dot(side) >= 0) continue;
       // The normal on the triangle's side: the first regular one on the way to its centroid.
       const std::size_t o = out(v[i]);
       const double u = mesh.uv[2 * o], w = mesh.uv[2 * o + 1];
@@ -1623,7 +1625,7 @@ void FaceMesher::twinSingularCorners(FaceMesh& mesh) {
         gp_Dir n;
         if (!eval_.pointNormal(u + e * (cu - u), w + e * (cv - w), p, n) || gp_Vec(n).Dot(side) <= 0)
           continue;
-        appendTwin(mesh, v[i], n);
+        singularTwins_[v[i]] = FoldVertex{n, appendTwin(mesh, v[i], n)};
         break;
       }
     }
@@ -1645,7 +1647,10 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
     if (m.isGhost(t) || m.isOutside(t)) continue;
     const cet::VertexId v[3] = {m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2)};
     std::uint32_t a = out(v[0]), b = out(v[1]), c = out(v[2]);
-    if (!folds_.empty() && (isFold(v[0]) || isFold(v[1]) || isFold(v[2]))) {
+    const auto twinned = [this](cet::VertexId x) {
+      return isFold(x) || (!singularTwins_.empty() && singularTwins_.count(x));
+    };
+    if ((!folds_.empty() || !singularTwins_.empty()) && (twinned(v[0]) || twinned(v[1]) || twinned(v[2]))) {
       const gp_Pnt P[3] = {position(mesh, v[0]), position(mesh, v[1]), position(mesh, v[2])};
       const gp_Vec side = triangleSide(v, P);
       a = shownVertex(v[0], side), b = shownVertex(v[1], side), c = shownVertex(v[2], side);
@@ -1695,6 +1700,7 @@ FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
   singular_.clear();
   offset_.clear();
   folds_.clear();
+  singularTwins_.clear();
   outShift_.clear();
   points_.clear();
   occurrences_.clear();

@@ -323,13 +323,16 @@ class FaceMesher {
   // Makes triangulator vertex v a fold vertex showing `before` itself, with a twin showing `after`.
   void appendFoldTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& before, const gp_Dir& after);
   // Appends a twin of triangulator vertex v showing `other` (at the end of the mesh: the triangulator
-  // vertices not appended yet come after it).
-  void appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other);
+  // vertices not appended yet come after it); returns its output id.
+  std::uint32_t appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other);
   // Vertices without a first-derivative normal on a fold (a boundary point where the edge turns
-  // back with the sheet): where a triangle's side faces away from one's normal, it becomes a fold
-  // vertex whose twin shows the normal on that side (the first regular one on the way to the
-  // triangle's centroid). Run before each snapshot.
+  // back with the sheet): where a triangle's side faces away from one's normal, it gets a twin
+  // showing the normal on that side (the first regular one on the way to the triangle's centroid),
+  // which the triangles on that side show. For the output alone: the refinement treats the vertex
+  // as before (made a fold vertex, poles' rules no longer held for it, and fuzzed faces with
+  // singular boundary points cascaded: 369 -> 42419 triangles). Run before each snapshot.
   void twinSingularCorners(FaceMesh& mesh);
+  std::unordered_map<cet::VertexId, FoldVertex> singularTwins_;
   // Where triangle t's free edge between regular corners crosses a fold (SurfaceEval::findFold; the
   // longest such edge): the fold point's (u, v) and the normals either side. False where none does.
   bool foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angleRad, double& u, double& v,
@@ -357,7 +360,9 @@ class FaceMesher {
   static constexpr int kFoldPointFloor = 8;
   static constexpr std::size_t kFoldPointShare = 64;
   bool foldRoom() const {
-    return foldPointCount_ < kFoldPointFloor + static_cast<int>(cdt_->vertexCount() / kFoldPointShare);
+    return foldPointCount_ <
+           (getenv("FIXCAP") ? atoi(getenv("FIXCAP"))
+                             : kFoldPointFloor + static_cast<int>(cdt_->vertexCount() / kFoldPointShare));
   }
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
   double uPeriod_ = 0, vPeriod_ = 0;  // the surface's periods (0: not periodic that way)
