@@ -360,9 +360,7 @@ class FaceMesher {
   static constexpr int kFoldPointFloor = 8;
   static constexpr std::size_t kFoldPointShare = 64;
   bool foldRoom() const {
-    return foldPointCount_ <
-           (getenv("FIXCAP") ? atoi(getenv("FIXCAP"))
-                             : kFoldPointFloor + static_cast<int>(cdt_->vertexCount() / kFoldPointShare));
+    return foldPointCount_ < kFoldPointFloor + static_cast<int>(cdt_->vertexCount() / kFoldPointShare);
   }
   std::vector<gp_Dir> normal_;          // natural unit normal per triangulator vertex
   double uPeriod_ = 0, vPeriod_ = 0;  // the surface's periods (0: not periodic that way)

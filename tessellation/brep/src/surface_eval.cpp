@@ -576,7 +576,7 @@ bool SurfaceEval::findFold(double ua, double va, double ub, double vb, const gp_
   // points were placed by noise: its fold points fed refinement beside them, 226 -> 37320
   // triangles).
   const double magnitude = std::max({std::abs(ua), std::abs(va), std::abs(ub), std::abs(vb)});
-  if (!getenv("NORES") && std::hypot(ub - ua, vb - va) < kFoldResolution * magnitude) return false;
+  if (std::hypot(ub - ua, vb - va) < kFoldResolution * magnitude) return false;
   const gp_Vec towardsA = gp_Vec(na) - gp_Vec(nb);
   gp_Pnt p;
   gp_Dir n;
