@@ -568,6 +568,23 @@ bool SurfaceEval::normalJumps(double ua, double va, double ub, double vb, const 
   return true;
 }
 
+bool SurfaceEval::foldAt(double u, double v, double ua, double va, double ub, double vb) const {
+  // A fold of the parametrisation: Su and Sv (nearly) parallel there, or the area element (nearly)
+  // vanishing against the ends'. A sheet bending over as sharply with its parametrisation regular
+  // (occ/terrain's rim, the bottle's neck: sines 0.9-1, area elements 0.3 of the ends' or more) is
+  // left to the angle, which refines it.
+  gp_Pnt p;
+  gp_Vec du, dv;
+  d1(u, v, p, du, dv);
+  const double area = du.Crossed(dv).Magnitude();
+  if (area < kFoldSine * du.Magnitude() * dv.Magnitude()) return true;
+  d1(ua, va, p, du, dv);
+  const double areaA = du.Crossed(dv).Magnitude();
+  d1(ub, vb, p, du, dv);
+  const double areaB = du.Crossed(dv).Magnitude();
+  return area < kFoldArea * std::max(areaA, areaB);
+}
+
 bool SurfaceEval::findFold(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb,
                            double angleRad, double& at, gp_Dir& before, gp_Dir& after) const {
   if (na.Dot(nb) >= 0) return false;
@@ -580,9 +597,14 @@ bool SurfaceEval::findFold(double ua, double va, double ub, double vb, const gp_
   const gp_Vec towardsA = gp_Vec(na) - gp_Vec(nb);
   gp_Pnt p;
   gp_Dir n;
-  // The middle of the turn: where the normal is as near to nb as to na (positive towards a).
+  // The middle of the turn: where the normal is as near to nb as to na (positive towards a). Whether
+  // it is a fold is asked after kFoldProbe steps, before the rest: most segments asked turn over
+  // as a regular surface bends (occ/terrain's rim asks thousands), and the answer holds that near.
   double t0 = 0, t1 = 1;
   for (int k = 0; k < kFoldBisections; ++k) {
+    if (k == kFoldProbe &&
+        !foldAt(ua + 0.5 * (t0 + t1) * (ub - ua), va + 0.5 * (t0 + t1) * (vb - va), ua, va, ub, vb))
+      return false;
     const double t = 0.5 * (t0 + t1);
     if (!regularNormal(ua + t * (ub - ua), va + t * (vb - va), p, n)) {  // Su x Sv vanishes: the fold itself
       t0 = t1 = t;
@@ -591,21 +613,6 @@ bool SurfaceEval::findFold(double ua, double va, double ub, double vb, const gp_
     (gp_Vec(n).Dot(towardsA) > 0 ? t0 : t1) = t;
   }
   at = 0.5 * (t0 + t1);
-  // A fold of the parametrisation: Su and Sv (nearly) parallel there, or the area element (nearly)
-  // vanishing against the ends'. A sheet bending over as sharply with its parametrisation regular
-  // (occ/terrain's rim, the bottle's neck: sines 0.9-1, area elements 0.3 of the ends' or more) is
-  // left to the angle, which refines it.
-  {
-    gp_Vec du, dv;
-    d1(ua + at * (ub - ua), va + at * (vb - va), p, du, dv);
-    const double area = du.Crossed(dv).Magnitude();
-    const bool parallel = area < kFoldSine * du.Magnitude() * dv.Magnitude();
-    d1(ua, va, p, du, dv);
-    const double areaA = du.Crossed(dv).Magnitude();
-    d1(ub, vb, p, du, dv);
-    const double areaB = du.Crossed(dv).Magnitude();
-    if (!parallel && !(area < kFoldArea * std::max(areaA, areaB))) return false;
-  }
   if (pinches(ua + at * (ub - ua), va + at * (vb - va), ub - ua, vb - va, gp_Vec(na) - gp_Vec(nb)))
     return false;
   // The normals shown on either side of the fold: the nearest pair of points either side of it

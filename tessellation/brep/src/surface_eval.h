@@ -145,6 +145,7 @@ class SurfaceEval {
   bool findFold(double ua, double va, double ub, double vb, const gp_Dir& na, const gp_Dir& nb,
                 double angleRad, double& at, gp_Dir& before, gp_Dir& after) const;
   static constexpr int kFoldBisections = 30;
+  static constexpr int kFoldProbe = 12;      // bisections before asking whether it is a fold (foldAt)
   static constexpr double kFoldSine = 0.1;   // a fold: Su and Sv within 6 degrees of parallel at the turn,
   static constexpr double kFoldArea = 0.05;  // or |Su x Sv| below this fraction of the larger of the ends'
 
@@ -181,6 +182,9 @@ class SurfaceEval {
   bool collapsed() const;
 
  private:
+  // Whether the parametrisation folds at (u, v), on the segment from (ua, va) to (ub, vb) across the
+  // fold (findFold's test).
+  bool foldAt(double u, double v, double ua, double va, double ub, double vb) const;
   // The unit (u, v) direction that the derivative at (u, v) maps nearest to zero (the smaller
   // eigenvector of the Gram matrix of Su and Sv), and the ratio of its image's length to the
   // largest image of a unit direction. False where the derivative vanishes.
