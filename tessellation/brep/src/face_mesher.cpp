@@ -266,18 +266,11 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   };
   cdt_ = std::make_unique<cet::Triangulator>();
   base_ = static_cast<std::uint32_t>(mesh.vertexCount());
-  normal_.clear();
-  singular_.clear();
-  offset_.clear();
-  folds_.clear();
-  singularTwins_.clear();
-  outShift_.clear();
+  clearVertexData();
   foldPointCount_ = 0;
   foldsFailed_ = false;
-  occurrences_.clear();
   records_.clear();
   touched_.clear();
-  points_.clear();
 
   // Points of each occurrence in increasing parameter: natural UV and 3D.
   struct OccPoints {
@@ -1693,9 +1686,7 @@ std::string FaceMesher::repairsReason(bool withDeferredLevels) const {
   return reason;
 }
 
-FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
-  cdt_.reset();
-  // The per-vertex arrays of the build go with its vertices (buildDomain() starts them afresh).
+void FaceMesher::clearVertexData() {
   normal_.clear();
   singular_.clear();
   offset_.clear();
@@ -1704,6 +1695,12 @@ FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
   outShift_.clear();
   points_.clear();
   occurrences_.clear();
+}
+
+FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
+  cdt_.reset();
+  // The per-vertex arrays of the build go with its vertices (buildDomain() starts them afresh).
+  clearVertexData();
   mesh.positions.resize(3 * std::size_t(base_));
   mesh.normals.resize(3 * std::size_t(base_));
   mesh.uv.resize(2 * std::size_t(base_));

@@ -95,6 +95,9 @@ class FaceMesher {
   // Drops a cancelled build: its vertices (appended from base_) and its triangulation. The next
   // advance() builds the domain again, as an uninterrupted build would have.
   FaceStatus abandonBuild(FaceMesh& mesh);
+  // Empties the arrays kept per triangulator vertex and the boundary occurrences (a build starts
+  // them afresh; a cancelled one drops them).
+  void clearVertexData();
   bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
   bool splitSegment(const Occurrence& occ, std::size_t o, std::vector<gp_Pnt2d>& uvs, std::vector<const gp_Pnt*>& ps,
                     std::vector<cet::VertexId>& chain, FaceMesh& mesh, std::string& problem);
