@@ -443,11 +443,21 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
 // ---------------------------------------------------------------------------------------------
 // Later levels: every boundary segment that its edge split at level k becomes the chain through the
 // new points; degenerate edges (one 3D point) are split evenly in UV to keep pace with their loop.
-bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem) {
+bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
+                                const std::atomic<bool>* cancel, bool& cancelled) {
+  BoundaryProgress& progress = boundaryProgress_;
+  if (progress.target != k) {
+    if (progress.target >= 0) {  // advanceFace() resumes the level it was cancelled on
+      problem = "internal: boundary refinement resumed for another level";
+      return false;
+    }
+    progress = BoundaryProgress{};
+    progress.target = k;
+  }
   std::vector<gp_Pnt2d> uvs;
   std::vector<const gp_Pnt*> ps;
-  std::vector<cet::VertexId> chain;
-  for (Occurrence& occ : occurrences_) {
+  for (; progress.occurrence < occurrences_.size(); ++progress.occurrence) {
+    Occurrence& occ = occurrences_[progress.occurrence];
     const LoopEdge& le = topology_.loops[occ.loop][occ.index];
     if (le.degenerated) continue;
     const EdgePoints& now = edges.points(le.edge, k);
@@ -457,10 +467,18 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
       problem = "internal: boundary chain out of step with its edge";
       return false;
     }
-    chain.clear();
-    chain.reserve(now.t.size());
-    std::size_t j = 0;
-    for (std::size_t o = 0; o + 1 < before.t.size(); ++o) {
+    std::vector<cet::VertexId>& chain = progress.chain;
+    if (progress.segment == 0) {
+      chain.clear();
+      chain.reserve(now.t.size());
+      progress.next = 0;
+    }
+    std::size_t& j = progress.next;
+    for (std::size_t& o = progress.segment; o + 1 < before.t.size(); ++o) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) {
+        cancelled = true;
+        return false;
+      }
       chain.push_back(occ.chain[o]);
       while (j < now.t.size() && now.t[j] <= before.t[o]) ++j;
       uvs.clear(), ps.clear();
@@ -472,10 +490,12 @@ bool FaceMesher::refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, s
     }
     chain.push_back(occ.chain.back());
     occ.chain.swap(chain);
+    progress.segment = 0;
   }
   if (!refinePoles(mesh, problem)) return false;
   cdt_->markDomain(cet::DomainRule::kLoopOrientation);
   boundaryLevel_ = k;
+  progress = BoundaryProgress{};
   return true;
 }
 
@@ -1695,6 +1715,7 @@ void FaceMesher::clearVertexData() {
   outShift_.clear();
   points_.clear();
   occurrences_.clear();
+  boundaryProgress_ = BoundaryProgress{};
 }
 
 FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {
@@ -1811,7 +1832,8 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
     if (!cdt_) {
       ok = buildDomain(k, edges, mesh, problem, cancel, cancelled);
     } else if (boundaryLevel_ < k) {
-      ok = refineBoundary(k, edges, mesh, problem);
+      ok = refineBoundary(k, edges, mesh, problem, cancel, cancelled);
+      if (cancelled) return FaceStatus::kCancelled;  // the next call goes on where it stopped
       if (!ok) {
         repairs_.push_back("rebuilt at level " + std::to_string(k) + ": " + problem);
         repaired_ = true;

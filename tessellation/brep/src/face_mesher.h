@@ -95,10 +95,14 @@ class FaceMesher {
   // Drops a cancelled build: its vertices (appended from base_) and its triangulation. The next
   // advance() builds the domain again, as an uninterrupted build would have.
   FaceStatus abandonBuild(FaceMesh& mesh);
-  // Empties the arrays kept per triangulator vertex and the boundary occurrences (a build starts
-  // them afresh; a cancelled one drops them).
+  // Empties the arrays kept per triangulator vertex and the boundary occurrences with their
+  // refinement's progress (a build starts them afresh; a cancelled one drops them).
   void clearVertexData();
-  bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem);
+  // Moves the boundary to level k's edge points (new points split the constraint segments). The
+  // cancel flag is read before each segment: once raised, it returns false with `cancelled` set,
+  // its progress kept (boundaryProgress_) for the next call with the same level.
+  bool refineBoundary(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
+                      const std::atomic<bool>* cancel, bool& cancelled);
   bool splitSegment(const Occurrence& occ, std::size_t o, std::vector<gp_Pnt2d>& uvs, std::vector<const gp_Pnt*>& ps,
                     std::vector<cet::VertexId>& chain, FaceMesh& mesh, std::string& problem);
   bool refinePoles(FaceMesh& mesh, std::string& problem);
@@ -382,6 +386,16 @@ class FaceMesher {
   bool exactDeviation_ = false;  // triangles' deviations in closed form, not sampled
   FaceStatus fallbackStatus_ = FaceStatus::kFallback;
   int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
+  // How far refineBoundary() got towards level `target` when the cancel flag stopped it: the next
+  // call goes on from there, placing the same points in the same order as an uninterrupted call.
+  struct BoundaryProgress {
+    int target = -1;                   // the level being refined to (-1: none under way)
+    std::size_t occurrence = 0;        // occurrences_ before it hold the target level's points
+    std::size_t segment = 0;           // segments of that occurrence already split
+    std::size_t next = 0;              // its first target-level edge point not yet placed
+    std::vector<cet::VertexId> chain;  // its refined chain so far
+  };
+  BoundaryProgress boundaryProgress_;
   // Scratch.
   std::vector<cet::Point2> points_;
   std::vector<cet::VertexId> ids_;
