@@ -194,7 +194,7 @@ gp_Vec FaceMesher::triangleSide(const cet::VertexId v[3], const gp_Pnt P[3]) con
 }
 
 bool FaceMesher::foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angleRad, double& u, double& v,
-                           gp_Dir& before, gp_Dir& after) const {
+                           gp_Dir& before, gp_Dir& after) {
   const cet::CetMesh& m = cdt_->mesh();
   double longest = -1;
   for (int i = 0; i < 3; ++i) {
@@ -207,9 +207,14 @@ bool FaceMesher::foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angle
     if (eval_.crossesCrease(ua, va, ub, vb)) continue;
     const double length = position(mesh, a).Distance(position(mesh, b));
     if (length <= longest) continue;
+    const std::uint64_t key = (std::uint64_t{a} << 32) | b;
+    if (noFold_.count(key)) continue;
     double at = 0;
     gp_Dir n0, n1;
-    if (!eval_.findFold(ua, va, ub, vb, normal_[a], normal_[b], angleRad, at, n0, n1)) continue;
+    if (!eval_.findFold(ua, va, ub, vb, normal_[a], normal_[b], angleRad, at, n0, n1)) {
+      noFold_.insert(key);
+      continue;
+    }
     longest = length;
     u = ua + at * (ub - ua), v = va + at * (vb - va);
     before = n0, after = n1;
@@ -1289,7 +1294,8 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   std::vector<gp_Pnt2d> uvs;
   if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
-  if (refineLevel_ != levelIndex) quadFlips_.clear(), pivotFlips_.clear(), failedSplits_.clear();
+  if (refineLevel_ != levelIndex)
+    quadFlips_.clear(), pivotFlips_.clear(), failedSplits_.clear(), noFold_.clear();
   int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
   int foldTroubleThisCall = 0;
   // Counted from the level's first call: a cancelled level resumes to the mesh an uninterrupted run makes.
@@ -1716,6 +1722,7 @@ void FaceMesher::clearVertexData() {
   points_.clear();
   occurrences_.clear();
   boundaryProgress_ = BoundaryProgress{};
+  noFold_.clear();  // vertex ids name other vertices in a new build
 }
 
 FaceStatus FaceMesher::abandonBuild(FaceMesh& mesh) {

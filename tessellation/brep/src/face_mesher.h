@@ -343,7 +343,12 @@ class FaceMesher {
   // Where triangle t's free edge between regular corners crosses a fold (SurfaceEval::findFold; the
   // longest such edge): the fold point's (u, v) and the normals either side. False where none does.
   bool foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angleRad, double& u, double& v,
-                 gp_Dir& before, gp_Dir& after) const;
+                 gp_Dir& before, gp_Dir& after);
+  // Directed edges (a << 32 | b) findFold found no fold on during this level (its answer depends
+  // only on the ends, their normals and the level's angle): not asked again. A triangle left
+  // unsplit beside terrain's rim asked about the same edges pass after pass (3572 searches of
+  // 792 edges on its level 0, a fifth of the level's time).
+  std::unordered_set<std::uint64_t> noFold_;
   // The fold point near the middle of the edge between fold vertices a and b: on a segment across
   // the edge through its middle, as long as the edge (SurfaceEval::findFold). Splitting such an edge
   // at its middle, for the angle along the fold, made a plain vertex there whose normal is the
