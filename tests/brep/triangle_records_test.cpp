@@ -46,5 +46,38 @@ TEST(TriangleRecords, RecordsKeepTheirPlaceAsTheStoreGrows) {
   }
 }
 
+// Every id keeps its own record across the blocks' boundaries (the first blocks ramp up in size),
+// each at the place it got when first reserved.
+TEST(TriangleRecords, EveryIdHasItsOwnRecordAcrossTheBlocks) {
+  TriangleRecords records;
+  constexpr cet::TriangleId kIds = 5000;
+  std::vector<const TriangleRecord*> places;
+  for (cet::TriangleId t = 0; t < kIds; ++t) {
+    records.reserve(t + 1);
+    records.at(t).v[0] = t;
+    places.push_back(&records.at(t));
+  }
+  for (cet::TriangleId t = 0; t < kIds; ++t) {
+    ASSERT_EQ(&records.at(t), places[t]) << "id " << t;
+    ASSERT_EQ(records.at(t).v[0], t) << "id " << t;
+    ASSERT_NE(records.find(t, t, cet::kNoVertex, cet::kNoVertex), nullptr) << "id " << t;
+  }
+}
+
+// A face of a few triangles makes a small store: every record is written when its block is made,
+// and a first block of 1024 records (56 KB) cost each small face 14 page faults.
+TEST(TriangleRecords, ASmallFaceMakesASmallStore) {
+  TriangleRecords records;
+  records.reserve(10);
+  EXPECT_LE(records.capacity(), 64u);
+  records.reserve(100);
+  EXPECT_LE(records.capacity(), 128u);
+  records.reserve(1000);
+  EXPECT_LE(records.capacity(), 1024u);
+  records.reserve(100000);
+  EXPECT_LE(records.capacity(), 100000u + 1024u);
+  EXPECT_GE(records.capacity(), 100000u);
+}
+
 }  // namespace
 }  // namespace cetview::brep

@@ -237,7 +237,7 @@ void EdgeTable::scalesSet() {
     info.faces.erase(std::remove_if(info.faces.begin(), info.faces.end(),
                                     [&](const FaceUse& use) { return !faceScales_[use.id].valid; }),
                      info.faces.end());
-    for (FaceUse& use : info.faces) use.scale = faceScales_[use.id];
+    for (FaceUse& use : info.faces) use.scale = &faceScales_[use.id];
   }
   faceUses_.assign(faceScales_.size(), {});
   for (EdgeId e = 0; e < info_.size(); ++e)
@@ -446,11 +446,11 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     // Points along an edge fall in a new knot span of a B-spline face nearly every time: evaluated
     // directly rather than through OpenCASCADE's per-span cache (bspline_direct.h).
     auto d1 = [&](std::size_t k, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
-      const FaceScale& scale = info.faces[k].scale;
+      const FaceScale& scale = *info.faces[k].scale;
       faceSideD1(scale.direct.get(), surfaces[k], scale.uMin, scale.uMax, scale.vMin, scale.vMax, u, v, p, du, dv);
     };
     auto pointOn = [&](std::size_t k, double u, double v) {
-      if (const BSplineDirect* direct = info.faces[k].scale.direct.get()) return direct->value(u, v);
+      if (const BSplineDirect* direct = info.faces[k].scale->direct.get()) return direct->value(u, v);
       return surfaces[k].Value(u, v);
     };
     // Su x Sv, or none (zero) where the surface has no area there: Su parallel to Sv (a pole, or a
@@ -485,15 +485,15 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       UvChord c;
       c.a = use.pcurve->Value(pcurveParameter(info, use, ta));
       c.b = use.pcurve->Value(pcurveParameter(info, use, tb));
-      c.ax = use.scale.uAxis.map(c.a.X()), c.ay = use.scale.vAxis.map(c.a.Y());
-      c.dx = use.scale.uAxis.map(c.b.X()) - c.ax, c.dy = use.scale.vAxis.map(c.b.Y()) - c.ay;
+      c.ax = use.scale->uAxis.map(c.a.X()), c.ay = use.scale->vAxis.map(c.a.Y());
+      c.dx = use.scale->uAxis.map(c.b.X()) - c.ax, c.dy = use.scale->vAxis.map(c.b.Y()) - c.ay;
       c.len = std::hypot(c.dx, c.dy);
       return c;
     };
     // The UV of the point at fraction f of the chord and `height` (scaled units) off it on `side`.
     auto offChord = [&](std::size_t k, const UvChord& c, double f, double height, int side, double& u,
                         double& v) {
-      const FaceScale& scale = info.faces[k].scale;
+      const FaceScale& scale = *info.faces[k].scale;
       const double h = height * side / c.len;
       u = scale.uAxis.inverse(c.ax + f * c.dx - h * c.dy);
       v = scale.vAxis.inverse(c.ay + f * c.dy + h * c.dx);
@@ -527,7 +527,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       bool inside;
     };
     auto reachInto = [&](std::size_t k, const UvChord& c, int side, double f = 0.5) {
-      const FaceScale& scale = info.faces[k].scale;
+      const FaceScale& scale = *info.faces[k].scale;
       Reach r;
       const double mx = c.ax + f * c.dx, my = c.ay + f * c.dy;
       const double rx = -side * c.dy / c.len, ry = side * c.dx / c.len;
@@ -552,7 +552,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     auto hugsChord = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb) {
       const gp_Pnt mid(0.5 * (pa.XYZ() + pb.XYZ()));
       for (std::size_t k = 0; k < uses; ++k) {
-        if (!info.faces[k].scale.curved) continue;
+        if (!info.faces[k].scale->curved) continue;
         const UvChord c = uvChord(k, ta, tb);
         if (!(c.len > 0)) continue;
         double room = 0.5 * pa.Distance(pb);  // in 3D (the scaled UV may stretch one way 1000:1)
@@ -575,8 +575,9 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     // The apex of a triangle standing on face k's UV chord c: above the point at fraction f of the
     // chord, height times its length away (side: which way), in the face's scaled UV. False
     // outside the face's parameter box.
-    auto apexAt = [&](std::size_t k, const UvChord& c, double f, double height, int side, double& au, double& av) {
-      const FaceScale& scale = info.faces[k].scale;
+    auto apexAt = [&](std::size_t k, const UvChord& c, double f, double height, int side, double& au,
+                      double& av) {
+      const FaceScale& scale = *info.faces[k].scale;
       offChord(k, c, f, height * c.len, side, au, av);
       return au >= scale.uMin && au <= scale.uMax && av >= scale.vMin && av <= scale.vMax;
     };
@@ -722,7 +723,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     auto standingFails = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, const gp_Vec* na, const gp_Vec* nb,
                              const Level& crit) {
       for (std::size_t k = 0; k < uses; ++k) {
-        const FaceScale& scale = info.faces[k].scale;
+        const FaceScale& scale = *info.faces[k].scale;
         if (!scale.curved) continue;
         for (int side : {-1, 1}) {
           if (info.faces[k].side != 0 && info.faces[k].side != side) continue;
@@ -815,7 +816,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       int segments = info.closed ? 3 : (info.straight ? 1 : 2);
       Level slight = tolerances_.back();
       for (const FaceUse& use : info.faces)
-        if (use.scale.bendsBeside) slight.chordal = 0.25 * tolerances_.back().chordal;
+        if (use.scale->bendsBeside) slight.chordal = 0.25 * tolerances_.back().chordal;
       if (segments == 2 && !info.sharesEnds && !misses(itemAt(info.first, info.last, info.p0, info.p1), slight))
         segments = 1;
       for (int i = 0; i <= segments; ++i) seedT.push_back(info.first + (info.last - info.first) * i / segments);

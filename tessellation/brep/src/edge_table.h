@@ -55,7 +55,7 @@ class EdgeTable {
   };
   // Before the first discretise(): every face's scale (from any thread, one call per face), then
   // scalesSet() once, from one thread.
-  void setFaceScale(FaceId face, const FaceScale& scale) { faceScales_[face] = scale; }
+  void setFaceScale(FaceId face, FaceScale scale) { faceScales_[face] = std::move(scale); }
   void scalesSet();
 
   // Discretises every non-degenerate edge for level k (after level k-1). Returns false if cancelled.
@@ -81,7 +81,7 @@ class EdgeTable {
     Handle(Geom2d_Curve) pcurve;
     double first = 0, last = 0;  // pcurve range
     int side = 1;                // the face lies left (+1) or right (-1) of the pcurve, or both (0: seam)
-    FaceScale scale;             // copied from faceScales_ by scalesSet()
+    const FaceScale* scale = nullptr;  // faceScales_[id], set by scalesSet()
   };
   struct Info {
     double first = 0, last = 0;

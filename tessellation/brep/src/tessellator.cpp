@@ -123,7 +123,7 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
     } catch (const Standard_Failure&) {
       // No usable surface: the face's mesher fails the same way and the face falls back.
     }
-    edges.setFaceScale(static_cast<FaceId>(f), scale);
+    edges.setFaceScale(static_cast<FaceId>(f), std::move(scale));
   });
   if (cancelled) return false;
   edges.scalesSet();

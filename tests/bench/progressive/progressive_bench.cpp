@@ -8,7 +8,12 @@
 // (MODEL: a file or "demo"; --repeat loads each model R times, BRepMesh once; --no-brepmesh skips
 // the reference, for quick runs of the progressive side alone; --direct-draws and --indirect-draws
 // force one drawing path (gpu_scene.h) where the device would take the other, to compare them.
-// "idle cpu" is the CPU time of drawing one idle frame, driver included; "draws" its draw calls.)
+// "idle cpu" is the CPU time of drawing one idle frame, driver included; "draws" its draw calls;
+// "1st faults" the process's page faults from the end of loading to the first complete frame: on
+// the project's virtual machines each costs about 10 us, so the memory a level first touches is
+// part of its time.)
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -38,12 +43,19 @@ double threadCpuMs() {
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
+// Minor page faults of the whole process so far (every thread: the workers, lavapipe's).
+long pageFaults() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
 
 struct Row {
   std::string model;
   std::size_t faces = 0;
   double brepmesh = 0, firstFrame = 0, lastLevel = 0, longestLoading = 0, idle = 0, idleCpu = 0;
   std::uint32_t drawCalls = 0;  // faces and edges, in an idle frame
+  long firstFaults = 0;         // page faults from the end of loading to the first complete frame
   std::vector<double> levelMs;
   double meanBytes = 0, maxBytes = 0;
   std::string error;
@@ -95,6 +107,7 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   }
   row.faces = loaded.model->faces().size();
   const auto start = Clock::now();  // the model finished loading
+  const long startFaults = pageFaults();
   auto created = brep::Tessellator::create(*loaded.model, params);
   if (!created.tessellator) {
     row.error = created.error;
@@ -140,6 +153,7 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
     while (seen < consumer.completeLevel() && !r.scene().uploadsPending()) {
       ++seen;
       row.levelMs.push_back(msSince(start));
+      if (seen == 0) row.firstFaults = pageFaults() - startFaults;
     }
     if (seen == last) break;
   }
@@ -209,9 +223,9 @@ int main(int argc, char** argv) {
               draws == Draws::kDirect     ? ", draws one by one"
               : draws == Draws::kIndirect ? ", indirect draws"
                                           : "");
-  std::printf("%-34s %6s %11s %11s %7s %11s %12s %10s %8s %6s %9s %11s  %s\n", "model", "faces",
-              "brepmesh ms", "1st frame", "ratio", "final ms", "max frame ms", "idle ms", "idle cpu", "draws",
-              "MB/frame", "max MB/frm", "ms per level");
+  std::printf("%-34s %6s %11s %11s %7s %10s %11s %12s %10s %8s %6s %9s %11s  %s\n", "model", "faces",
+              "brepmesh ms", "1st frame", "ratio", "1st faults", "final ms", "max frame ms", "idle ms",
+              "idle cpu", "draws", "MB/frame", "max MB/frm", "ms per level");
   double brepmeshMs = 0;  // of the model's first run, shown again on its repeats
   for (int run = 0; run < repeat * static_cast<int>(models.size()); ++run) {
     const std::string& m = models[static_cast<std::size_t>(run / repeat)];
@@ -224,10 +238,10 @@ int main(int argc, char** argv) {
     }
     std::string levels;
     for (double t : row.levelMs) levels += (levels.empty() ? "" : " ") + std::to_string(static_cast<int>(t));
-    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %11.1f %12.1f %10.1f %8.1f %6u %9.2f %11.2f  %s\n",
+    std::printf("%-34s %6zu %11.1f %11.1f %6.2fx %10ld %11.1f %12.1f %10.1f %8.1f %6u %9.2f %11.2f  %s\n",
                 name.c_str(), row.faces, row.brepmesh, row.firstFrame, row.firstFrame / row.brepmesh,
-                row.lastLevel, row.longestLoading, row.idle, row.idleCpu, row.drawCalls, row.meanBytes / 1e6,
-                row.maxBytes / 1e6, levels.c_str());
+                row.firstFaults, row.lastLevel, row.longestLoading, row.idle, row.idleCpu, row.drawCalls,
+                row.meanBytes / 1e6, row.maxBytes / 1e6, levels.c_str());
     std::fflush(stdout);
   }
   engine::destroyDevice(*device);
