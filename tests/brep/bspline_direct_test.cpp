@@ -175,29 +175,59 @@ TEST(BSplineDirect, SpansFollowTheKnots) {
 }
 
 TEST(BSplineDirect, FollowsThePlacement) {
-  // A face's location moves its surface: the evaluator takes it on the poles.
+  // A face's location moves its surface: the evaluator takes it on the poles (a moved copy of them,
+  // with their weights or without).
   std::mt19937 rng(5);
-  const auto s = randomSurface(rng, 3, 2, true, {1, 2});
-  gp_Trsf placement;
-  placement.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(1, 1, 0)), 0.7);
-  placement.SetTranslationPart(gp_Vec(-4, 5, 0.5));
-  const auto direct = BSplineDirect::create(s, placement);
-  ASSERT_NE(direct, nullptr);
-  const Handle(Geom_BSplineSurface) moved = Handle(Geom_BSplineSurface)::DownCast(s->Transformed(placement));
-  double u0, u1, v0, v1;
-  s->Bounds(u0, u1, v0, v1);
-  for (int i = 0; i <= 10; ++i) {
-    for (int j = 0; j <= 10; ++j) {
-      const double u = u0 + (u1 - u0) * i / 10, v = v0 + (v1 - v0) * j / 10;
-      gp_Pnt p, q;
-      gp_Vec du, dv, eu, ev;
-      moved->D1(u, v, p, du, dv);
-      direct->d1(u, v, q, eu, ev);
-      EXPECT_NEAR(p.Distance(q), 0.0, 1e-9);
-      EXPECT_NEAR((du - eu).Magnitude(), 0.0, 1e-9 * (1 + du.Magnitude()));
-      EXPECT_NEAR((dv - ev).Magnitude(), 0.0, 1e-9 * (1 + dv.Magnitude()));
+  for (const bool rational : {true, false}) {
+    SCOPED_TRACE(rational ? "rational" : "polynomial");
+    const auto s = randomSurface(rng, 3, 2, rational, {1, 2});
+    gp_Trsf placement;
+    placement.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(1, 1, 0)), 0.7);
+    placement.SetTranslationPart(gp_Vec(-4, 5, 0.5));
+    const auto direct = BSplineDirect::create(s, placement);
+    ASSERT_NE(direct, nullptr);
+    EXPECT_FALSE(direct->readsPolesInPlace());
+    const Handle(Geom_BSplineSurface) moved =
+        Handle(Geom_BSplineSurface)::DownCast(s->Transformed(placement));
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    for (int i = 0; i <= 10; ++i) {
+      for (int j = 0; j <= 10; ++j) {
+        const double u = u0 + (u1 - u0) * i / 10, v = v0 + (v1 - v0) * j / 10;
+        gp_Pnt p, q;
+        gp_Vec du, dv, eu, ev;
+        moved->D1(u, v, p, du, dv);
+        direct->d1(u, v, q, eu, ev);
+        EXPECT_NEAR(p.Distance(q), 0.0, 1e-9);
+        EXPECT_NEAR((du - eu).Magnitude(), 0.0, 1e-9 * (1 + du.Magnitude()));
+        EXPECT_NEAR((dv - ev).Magnitude(), 0.0, 1e-9 * (1 + dv.Magnitude()));
+      }
     }
   }
+}
+
+// A polynomial surface in place (no placement) is read from its own pole array, not copied (on
+// occ/terrain.brep the copy was 3.2 MB written afresh on every load); the evaluator keeps the
+// surface alive, and gives the same points as the surface after the caller has let it go.
+TEST(BSplineDirect, APolynomialSurfaceInPlaceIsReadFromItsOwnPoles) {
+  std::mt19937 rng(13);
+  Handle(Geom_BSplineSurface) s = randomSurface(rng, 3, 3, false, {1, 2});
+  const auto direct = BSplineDirect::create(s);
+  ASSERT_NE(direct, nullptr);
+  EXPECT_TRUE(direct->readsPolesInPlace());
+  EXPECT_FALSE(BSplineDirect::create(randomSurface(rng, 3, 3, true, {1}))->readsPolesInPlace())
+      << "weighted poles are copied with their weights";
+  double u0, u1, v0, v1;
+  s->Bounds(u0, u1, v0, v1);
+  std::vector<gp_Pnt> expected;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) expected.push_back(s->Value(u0 + (u1 - u0) * i / 8, v0 + (v1 - v0) * j / 8));
+  s.Nullify();
+  std::size_t k = 0;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j)
+      EXPECT_NEAR(expected[k++].Distance(direct->value(u0 + (u1 - u0) * i / 8, v0 + (v1 - v0) * j / 8)), 0.0,
+                  1e-12);
 }
 
 TEST(BSplineDirect, DeclinesPeriodicSurfaces) {

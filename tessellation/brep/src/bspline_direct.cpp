@@ -26,15 +26,32 @@ std::unique_ptr<BSplineDirect> BSplineDirect::create(const Handle(Geom_BSplineSu
   if (!flat(s->UKnotSequence(), d->u_) || !flat(s->VKnotSequence(), d->v_)) return nullptr;
   const TColgp_Array2OfPnt& poles = s->Poles();
   const TColStd_Array2OfReal* weights = s->Weights();
-  d->poles_.resize(4 * static_cast<std::size_t>(d->u_.poles) * static_cast<std::size_t>(d->v_.poles));
-  double* out = d->poles_.data();
-  for (int i = 1; i <= d->u_.poles; ++i) {
-    for (int j = 1; j <= d->v_.poles; ++j, out += 4) {
-      // An affine map of the poles maps the surface (weights unchanged).
-      const gp_Pnt p = poles(poles.LowerRow() + i - 1, poles.LowerCol() + j - 1).Transformed(placement);
-      const double w = d->rational_ && weights ? (*weights)(weights->LowerRow() + i - 1, weights->LowerCol() + j - 1) : 1.0;
-      out[0] = p.X() * w, out[1] = p.Y() * w, out[2] = p.Z() * w, out[3] = w;
+  const std::size_t nu = static_cast<std::size_t>(d->u_.poles), nv = static_cast<std::size_t>(d->v_.poles);
+  static_assert(sizeof(gp_Pnt) == 3 * sizeof(double), "gp_Pnt is its three coordinates");
+  const gp_Pnt& first = poles(poles.LowerRow(), poles.LowerCol());
+  const bool inPlace = !d->rational_ && placement.Form() == gp_Identity &&
+                       static_cast<std::size_t>(poles.RowLength()) == nv &&
+                       static_cast<std::size_t>(poles.ColLength()) == nu &&
+                       &poles(poles.UpperRow(), poles.UpperCol()) == &first + (nu * nv - 1);
+  d->stride_ = d->rational_ ? 4 : 3;
+  if (inPlace) {
+    d->surface_ = s;
+    d->poles_ = reinterpret_cast<const double*>(&first);
+  } else {
+    d->ownPoles_.resize(static_cast<std::size_t>(d->stride_) * nu * nv);
+    double* out = d->ownPoles_.data();
+    for (int i = 1; i <= d->u_.poles; ++i) {
+      for (int j = 1; j <= d->v_.poles; ++j, out += d->stride_) {
+        // An affine map of the poles maps the surface (weights unchanged).
+        const gp_Pnt p = poles(poles.LowerRow() + i - 1, poles.LowerCol() + j - 1).Transformed(placement);
+        const double w = d->rational_ && weights
+                             ? (*weights)(weights->LowerRow() + i - 1, weights->LowerCol() + j - 1)
+                             : 1.0;
+        out[0] = p.X() * w, out[1] = p.Y() * w, out[2] = p.Z() * w;
+        if (d->rational_) out[3] = w;
+      }
     }
+    d->poles_ = d->ownPoles_.data();
   }
   d->buildPatches();
   return d;
@@ -189,11 +206,13 @@ void BSplineDirect::buildPatches() {
   const std::size_t spansU = static_cast<std::size_t>(u_.patchSpans), spansV = static_cast<std::size_t>(v_.patchSpans);
   const std::size_t perPatch = static_cast<std::size_t>(4 * (p + 1) * (q + 1));
   const std::size_t doubles = spansU * spansV * perPatch;
-  if (doubles == 0 || doubles > kPatchDoubles || doubles > kPatchRatio * poles_.size()) return;
+  const std::size_t poleDoubles = 4 * static_cast<std::size_t>(u_.poles) * static_cast<std::size_t>(v_.poles);
+  if (doubles == 0 || doubles > kPatchDoubles || doubles > kPatchRatio * poleDoubles) return;
   u_.buildPower();
   v_.buildPower();
   patches_.assign(doubles, 0.0);
-  const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
+  const std::size_t stride = static_cast<std::size_t>(stride_),
+                    rowStride = stride * static_cast<std::size_t>(v_.poles);
   const int nu = p + 1, nv = q + 1;
   for (std::size_t a = 0; a < u_.patchIndex.size(); ++a) {
     if (u_.patchIndex[a] < 0) continue;
@@ -206,14 +225,16 @@ void BSplineDirect::buildPatches() {
       // C[k][l] = sum over i, j of Au[i][k] Av[j][l] P[a + i][b + j] (span a's first pole is a).
       for (int i = 0; i < nu; ++i) {
         for (int j = 0; j < nv; ++j) {
-          const double* P = poles_.data() + (a + static_cast<std::size_t>(i)) * rowStride + 4 * (b + static_cast<std::size_t>(j));
+          const double* P = poles_ + (a + static_cast<std::size_t>(i)) * rowStride +
+                            stride * (b + static_cast<std::size_t>(j));
+          const double weight = stride == 4 ? P[3] : 1.0;
           for (int k = 0; k < nu; ++k) {
             const double wu = Au[i * nu + k];
             if (wu == 0.0) continue;
             for (int l = 0; l < nv; ++l) {
               const double w = wu * Av[j * nv + l];
               double* c = C + 4 * (k * nv + l);
-              c[0] += w * P[0], c[1] += w * P[1], c[2] += w * P[2], c[3] += w * P[3];
+              c[0] += w * P[0], c[1] += w * P[1], c[2] += w * P[2], c[3] += w * weight;
             }
           }
         }
@@ -253,29 +274,31 @@ void BSplineDirect::evaluatePatch(double u, double v, int su, int sv, double* ou
     for (int c = 0; c < 4; ++c) out[4 + c] = su4[c] / hu, out[8 + c] = sv4[c] / hv;
 }
 
-template <bool kDerivatives, int PU, int PV>
+template <bool kDerivatives, int S, int PU, int PV>
 void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) const {
-  // out: the homogeneous point (4), and with derivatives its u (4) and v (4) derivatives.
+  // out: the homogeneous point (4), and with derivatives its u (4) and v (4) derivatives; without
+  // weights (S = 3) the weight is 1 and its derivatives 0.
   double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNu[kMaxDegree + 1], dNv[kMaxDegree + 1];
   basis<PU>(u_.knots.data(), u_.inverses(su), u_.degree, su, u, Nu, kDerivatives ? dNu : nullptr);
   basis<PV>(v_.knots.data(), v_.inverses(sv), v_.degree, sv, v, Nv, kDerivatives ? dNv : nullptr);
   const int uDegree = PU > 0 ? PU : u_.degree, vDegree = PV > 0 ? PV : v_.degree;
-  double s[4] = {0, 0, 0, 0}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
-  const std::size_t rowStride = 4 * static_cast<std::size_t>(v_.poles);
-  const double* base = poles_.data() + static_cast<std::size_t>(su - uDegree) * rowStride +
-                       4 * static_cast<std::size_t>(sv - vDegree);
+  double s[4] = {0, 0, 0, 1}, su4[4] = {0, 0, 0, 0}, sv4[4] = {0, 0, 0, 0};
+  const std::size_t rowStride = S * static_cast<std::size_t>(v_.poles);
+  const double* base = poles_ + static_cast<std::size_t>(su - uDegree) * rowStride +
+                       S * static_cast<std::size_t>(sv - vDegree);
+  if (S == 4) s[3] = 0;
   for (int r = 0; r <= uDegree; ++r) {
     const double* row = base + static_cast<std::size_t>(r) * rowStride;
-    double a[4] = {0, 0, 0, 0}, b[4] = {0, 0, 0, 0};
+    double a[S] = {}, b[S] = {};
     for (int c = 0; c <= vDegree; ++c) {
-      const double* q = row + 4 * c;
-      for (int k = 0; k < 4; ++k) a[k] += Nv[c] * q[k];
+      const double* q = row + S * c;
+      for (int k = 0; k < S; ++k) a[k] += Nv[c] * q[k];
       if (kDerivatives)
-        for (int k = 0; k < 4; ++k) b[k] += dNv[c] * q[k];
+        for (int k = 0; k < S; ++k) b[k] += dNv[c] * q[k];
     }
-    for (int k = 0; k < 4; ++k) s[k] += Nu[r] * a[k];
+    for (int k = 0; k < S; ++k) s[k] += Nu[r] * a[k];
     if (kDerivatives) {
-      for (int k = 0; k < 4; ++k) su4[k] += dNu[r] * a[k], sv4[k] += Nu[r] * b[k];
+      for (int k = 0; k < S; ++k) su4[k] += dNu[r] * a[k], sv4[k] += Nu[r] * b[k];
     }
   }
   for (int k = 0; k < 4; ++k) out[k] = s[k];
@@ -283,13 +306,33 @@ void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) co
     for (int k = 0; k < 4; ++k) out[4 + k] = su4[k], out[8 + k] = sv4[k];
 }
 
-template <bool kDerivatives, int PU>
+template <bool kDerivatives, int S, int PU>
 void BSplineDirect::evaluateWithU(double u, double v, int su, int sv, double* out) const {
   switch (v_.degree) {
-    case 1: return evaluate<kDerivatives, PU, 1>(u, v, su, sv, out);
-    case 2: return evaluate<kDerivatives, PU, 2>(u, v, su, sv, out);
-    case 3: return evaluate<kDerivatives, PU, 3>(u, v, su, sv, out);
-    default: return evaluate<kDerivatives, PU, 0>(u, v, su, sv, out);
+    case 1:
+      return evaluate<kDerivatives, S, PU, 1>(u, v, su, sv, out);
+    case 2:
+      return evaluate<kDerivatives, S, PU, 2>(u, v, su, sv, out);
+    case 3:
+      return evaluate<kDerivatives, S, PU, 3>(u, v, su, sv, out);
+    default:
+      return evaluate<kDerivatives, S, PU, 0>(u, v, su, sv, out);
+  }
+}
+
+template <bool kDerivatives, int S>
+void BSplineDirect::evaluateWithStride(double u, double v, int su, int sv, double* out) const {
+  // Degrees 1 to 3 each way (most faces of the sample models have one of them at least) with
+  // their loops unrolled; others take the degree at run time.
+  switch (u_.degree) {
+    case 1:
+      return evaluateWithU<kDerivatives, S, 1>(u, v, su, sv, out);
+    case 2:
+      return evaluateWithU<kDerivatives, S, 2>(u, v, su, sv, out);
+    case 3:
+      return evaluateWithU<kDerivatives, S, 3>(u, v, su, sv, out);
+    default:
+      return evaluateWithU<kDerivatives, S, 0>(u, v, su, sv, out);
   }
 }
 
@@ -298,14 +341,8 @@ void BSplineDirect::evaluate(double u, double v, int su, int sv, double* out) co
   if (!patches_.empty() && u_.patchIndex[static_cast<std::size_t>(su - u_.degree)] >= 0 &&
       v_.patchIndex[static_cast<std::size_t>(sv - v_.degree)] >= 0)
     return evaluatePatch<kDerivatives>(u, v, su, sv, out);
-  // Degrees 1 to 3 each way (most faces of the sample models have one of them at least) with
-  // their loops unrolled; others take the degree at run time.
-  switch (u_.degree) {
-    case 1: return evaluateWithU<kDerivatives, 1>(u, v, su, sv, out);
-    case 2: return evaluateWithU<kDerivatives, 2>(u, v, su, sv, out);
-    case 3: return evaluateWithU<kDerivatives, 3>(u, v, su, sv, out);
-    default: return evaluateWithU<kDerivatives, 0>(u, v, su, sv, out);
-  }
+  if (stride_ == 4) return evaluateWithStride<kDerivatives, 4>(u, v, su, sv, out);
+  return evaluateWithStride<kDerivatives, 3>(u, v, su, sv, out);
 }
 
 gp_Pnt BSplineDirect::value(double u, double v, int su, int sv) const {

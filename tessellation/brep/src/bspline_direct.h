@@ -37,6 +37,11 @@ class BSplineDirect {
 
   // Whether points go through the polynomial patches (see buildPatches), for tests.
   bool usesPatches() const { return !patches_.empty(); }
+  // Whether the poles are read in place from the surface's own array (see poles_), for tests.
+  bool readsPolesInPlace() const { return !surface_.IsNull(); }
+
+  BSplineDirect(const BSplineDirect&) = delete;  // poles_ may point into ownPoles_
+  BSplineDirect& operator=(const BSplineDirect&) = delete;
 
   // Index of the knot span holding the parameter (the first span for parameters before it, the
   // last for those past it: they are evaluated on its polynomial, as OpenCASCADE does). Spans are
@@ -95,15 +100,24 @@ class BSplineDirect {
   std::vector<double> patches_;  // per non-empty span pair (u major): (p+1) x (q+1) coefficients of 4 doubles
   template <bool kDerivatives>
   void evaluate(double u, double v, int su, int sv, double* out) const;
-  template <bool kDerivatives, int PU>
+  template <bool kDerivatives, int S>
+  void evaluateWithStride(double u, double v, int su, int sv, double* out) const;
+  template <bool kDerivatives, int S, int PU>
   void evaluateWithU(double u, double v, int su, int sv, double* out) const;
-  template <bool kDerivatives, int PU, int PV>  // degrees fixed at compile time, or 0
+  // S: doubles per pole (3, or 4 with the weight); degrees fixed at compile time, or 0.
+  template <bool kDerivatives, int S, int PU, int PV>
   void evaluate(double u, double v, int su, int sv, double* out) const;
 
   Direction u_, v_;
   bool rational_ = false;
-  // Poles row by row (u index major): x, y, z and the weight (rational: x w, y w, z w, w).
-  std::vector<double> poles_;
+  // Poles row by row (u index major), stride_ doubles each: rational, x w, y w, z w and the weight
+  // w (in ownPoles_); otherwise x, y, z, read in place from the surface's own array where the
+  // placement is the identity (occ/terrain.brep: 3.2 MB that a copy wrote afresh, 774 page
+  // faults on every load), else from a moved copy in ownPoles_.
+  const double* poles_ = nullptr;
+  int stride_ = 4;
+  std::vector<double> ownPoles_;
+  Handle(Geom_BSplineSurface) surface_;  // keeps the poles read in place alive
 };
 
 }  // namespace cetview::brep

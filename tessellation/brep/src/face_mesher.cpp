@@ -862,7 +862,8 @@ void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collap
 void FaceMesher::buildChords(const FaceMesh& mesh) {
   chords_.clear();
   poleChords_.clear();
-  chordGrid_.clear();
+  gridStart_.clear();
+  gridChords_.clear();
   const cet::CetMesh& m = cdt_->mesh();
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, lengthSum = 0;
   const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
@@ -938,16 +939,27 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
   gridNx_ = static_cast<int>(std::clamp((x1 - x0) / cell + 1, 1.0, 256.0));
   gridNy_ = static_cast<int>(std::clamp((y1 - y0) / cell + 1, 1.0, 256.0));
   gridCellX_ = std::max((x1 - x0) / gridNx_, 1e-300), gridCellY_ = std::max((y1 - y0) / gridNy_, 1e-300);
-  chordGrid_.assign(static_cast<std::size_t>(gridNx_ * gridNy_), {});
-  for (std::uint32_t k = 0; k < chords_.size(); ++k) {
-    const Chord& c = chords_[k];
+  // Cells in one array (a count per cell, then each cell's chords in order): most cells of a face's
+  // grid are empty (the chords run along its boundary), and a vector per cell made up to 65536 of
+  // them per level (1.5 MB on occ/terrain.brep, each a page fault's worth on first touch).
+  const std::size_t cells = static_cast<std::size_t>(gridNx_) * static_cast<std::size_t>(gridNy_);
+  gridStart_.assign(cells + 1, 0);
+  const auto forCells = [&](const Chord& c, auto&& f) {
     const int i0 = std::clamp(static_cast<int>((c.x0 - gridX0_) / gridCellX_), 0, gridNx_ - 1);
     const int i1 = std::clamp(static_cast<int>((c.x1 - gridX0_) / gridCellX_), 0, gridNx_ - 1);
     const int j0 = std::clamp(static_cast<int>((c.y0 - gridY0_) / gridCellY_), 0, gridNy_ - 1);
     const int j1 = std::clamp(static_cast<int>((c.y1 - gridY0_) / gridCellY_), 0, gridNy_ - 1);
     for (int i = i0; i <= i1; ++i)
-      for (int j = j0; j <= j1; ++j) chordGrid_[static_cast<std::size_t>(j * gridNx_ + i)].push_back(k);
-  }
+      for (int j = j0; j <= j1; ++j)
+        f(static_cast<std::size_t>(j) * static_cast<std::size_t>(gridNx_) + static_cast<std::size_t>(i));
+  };
+  for (const Chord& c : chords_) forCells(c, [&](std::size_t g) { ++gridStart_[g + 1]; });
+  for (std::size_t g = 0; g < cells; ++g) gridStart_[g + 1] += gridStart_[g];
+  gridChords_.resize(gridStart_[cells]);
+  std::vector<std::uint32_t>& next = gridFill_;
+  next.assign(gridStart_.begin(), gridStart_.end() - 1);
+  for (std::uint32_t k = 0; k < chords_.size(); ++k)
+    forCells(chords_[k], [&](std::size_t g) { gridChords_[next[g]++] = k; });
 }
 
 bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
@@ -957,7 +969,10 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
   if (i < 0 || j < 0 || i >= gridNx_ || j >= gridNy_) return true;
   gp_Pnt x;
   bool evaluated = false;
-  for (std::uint32_t k : chordGrid_[static_cast<std::size_t>(j * gridNx_ + i)]) {
+  const std::size_t cell =
+      static_cast<std::size_t>(j) * static_cast<std::size_t>(gridNx_) + static_cast<std::size_t>(i);
+  for (std::uint32_t at = gridStart_[cell]; at < gridStart_[cell + 1]; ++at) {
+    const std::uint32_t k = gridChords_[at];
     const Chord& c = chords_[k];
     if (q.x < c.x0 || q.x > c.x1 || q.y < c.y0 || q.y > c.y1) continue;
     // Only points beside the chord (projecting within it, with a small overhang) are at risk.

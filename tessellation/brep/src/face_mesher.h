@@ -288,7 +288,9 @@ class FaceMesher {
   };
   std::vector<Chord> chords_;
   std::vector<std::uint32_t> poleChords_;  // those with an end at a pole or apex
-  std::vector<std::vector<std::uint32_t>> chordGrid_;  // chords by cell of a uniform scaled-UV grid
+  // Chords by cell of a uniform scaled-UV grid: cell c's are gridChords_[gridStart_[c] ..
+  // gridStart_[c + 1]); gridFill_ is buildChords' scratch.
+  std::vector<std::uint32_t> gridStart_, gridChords_, gridFill_;
   double gridX0_ = 0, gridY0_ = 0, gridCellX_ = 1, gridCellY_ = 1;
   int gridNx_ = 0, gridNy_ = 0;
 
