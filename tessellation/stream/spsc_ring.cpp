@@ -27,7 +27,9 @@ SpscRing::SpscRing(std::size_t capacityBytes) : mask_(roundUpPow2(capacityBytes)
   buffer_.reset(new std::uint8_t[mask_ + 1]);
 }
 
-bool SpscRing::tryWrite(const void* data, std::size_t size, std::uint32_t tag) {
+bool SpscRing::tryWrite(const void* first, std::size_t firstSize, const void* second, std::size_t secondSize,
+                        std::uint32_t tag) {
+  const std::size_t size = firstSize + secondSize;
   assert(size <= maxRecordSize() && tag != kSkip);
   const std::uint64_t write = write_.load(std::memory_order_relaxed);
   const std::uint64_t read = read_.load(std::memory_order_acquire);
@@ -47,7 +49,8 @@ bool SpscRing::tryWrite(const void* data, std::size_t size, std::uint32_t tag) {
   std::uint8_t* dst = buffer_.get() + (static_cast<std::size_t>(at) & mask_);
   const Header h{static_cast<std::uint32_t>(size), tag};
   std::memcpy(dst, &h, sizeof h);
-  if (size > 0) std::memcpy(dst + kHeader, data, size);
+  if (firstSize > 0) std::memcpy(dst + kHeader, first, firstSize);
+  if (secondSize > 0) std::memcpy(dst + kHeader + firstSize, second, secondSize);
   write_.store(at + need, std::memory_order_release);
   return true;
 }
@@ -77,13 +80,10 @@ std::size_t SpscRing::usedBytes() const {
   return static_cast<std::size_t>(write_.load(std::memory_order_acquire) - read_.load(std::memory_order_acquire));
 }
 
-bool RecordWriter::tryFragment(const std::uint8_t* data, std::size_t size, std::uint32_t tag, std::uint32_t flags,
-                               std::uint64_t total) {
-  scratch_.resize(sizeof(FragmentHeader) + size);
+bool RecordWriter::tryFragment(const std::uint8_t* data, std::size_t size, std::uint32_t tag,
+                               std::uint32_t flags, std::uint64_t total) {
   const FragmentHeader h{flags, 0, total};
-  std::memcpy(scratch_.data(), &h, sizeof h);
-  if (size > 0) std::memcpy(scratch_.data() + sizeof h, data, size);
-  return ring_.tryWrite(scratch_.data(), scratch_.size(), tag);
+  return ring_.tryWrite(&h, sizeof h, data, size, tag);
 }
 
 bool RecordReader::next(Record& record) {

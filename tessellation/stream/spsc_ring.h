@@ -35,7 +35,13 @@ class SpscRing {
 
   // --- producer thread only ---
   // Copies `size` bytes (size <= maxRecordSize()) as one record; false if the ring is too full now.
-  bool tryWrite(const void* data, std::size_t size, std::uint32_t tag = 0);
+  bool tryWrite(const void* data, std::size_t size, std::uint32_t tag = 0) {
+    return tryWrite(data, size, nullptr, 0, tag);
+  }
+  // One record of two pieces back to back (a fragment's header and its payload), with no copy in
+  // between.
+  bool tryWrite(const void* first, std::size_t firstSize, const void* second, std::size_t secondSize,
+                std::uint32_t tag);
 
   // --- consumer thread only ---
   struct View {
@@ -76,7 +82,6 @@ class RecordWriter {
   bool tryFragment(const std::uint8_t* data, std::size_t size, std::uint32_t tag, std::uint32_t flags,
                    std::uint64_t total);
   SpscRing& ring_;
-  std::vector<std::uint8_t> scratch_;
 };
 
 // Consumer side: returns whole records. Unfragmented ones are read in place; fragmented ones are

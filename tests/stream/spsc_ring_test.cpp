@@ -66,6 +66,28 @@ TEST(SpscRing, FullRingRefusesAndRecoversAfterRelease) {
   EXPECT_TRUE(ring.tryWrite(rec.data(), rec.size(), 4));
 }
 
+// A record written as two pieces (RecordWriter's fragment header and payload, with no copy in
+// between) reads back as one record holding both, in order, also where it follows a skipped tail.
+TEST(SpscRing, TwoPiecesMakeOneRecord) {
+  SpscRing ring(256);
+  for (std::uint32_t round = 0; round < 12; ++round) {
+    const auto a = pattern(8 + round, round), b = pattern(40 + 3 * round, round + 100);
+    ASSERT_TRUE(ring.tryWrite(a.data(), a.size(), b.data(), b.size(), round));
+    SpscRing::View v;
+    ASSERT_TRUE(ring.tryRead(v));
+    EXPECT_EQ(v.tag, round);
+    ASSERT_EQ(v.size, a.size() + b.size());
+    EXPECT_EQ(std::memcmp(v.data, a.data(), a.size()), 0);
+    EXPECT_EQ(std::memcmp(v.data + a.size(), b.data(), b.size()), 0);
+    ring.release();
+  }
+  const auto a = pattern(5, 7);
+  ASSERT_TRUE(ring.tryWrite(a.data(), a.size(), nullptr, 0, 3)) << "an empty second piece";
+  SpscRing::View v;
+  ASSERT_TRUE(ring.tryRead(v));
+  EXPECT_EQ(v.size, a.size());
+}
+
 TEST(SpscRing, WrapAroundKeepsRecordsContiguousAndInOrder) {
   SpscRing ring(256);
   std::uint32_t written = 0, read = 0;
