@@ -1366,6 +1366,12 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       }
     }
     records_.reserve(triangles);
+    // evaluateTriangle makes each entry afresh: when the pass outgrows the array, the old entries
+    // are dropped rather than copied, so the allocator can hand back the same memory, extended.
+    if (pending_.capacity() < measured_.size()) {
+      std::vector<Pending>().swap(pending_);
+      pending_.reserve(measured_.size() + measured_.size() / 2);
+    }
     pending_.resize(measured_.size());
     // A pass over a whole level's triangles can take a second on a wild face: the cancel flag is
     // read every few triangles (a cancelled level resumes to the same mesh: no point or flip is
