@@ -40,6 +40,8 @@ class EdgeTable {
   // Gathers the edges and the faces using them; cheap (no surface is evaluated). `tolerances`: the
   // edges' tolerance at each level, coarsest first.
   EdgeTable(const ModelImpl& model, std::vector<Level> tolerances);
+  EdgeTable(const EdgeTable&) = delete;  // its edges' face uses point into faceScales_
+  EdgeTable& operator=(const EdgeTable&) = delete;
 
   // What the discretisation needs of a face's surface (SurfaceEval's scaling and parameter box).
   struct FaceScale {
