@@ -25,6 +25,7 @@ LiveTessellation::CreateResult LiveTessellation::create(std::unique_ptr<brep::Mo
   live->finestAbsolute_ = std::min(options.finestRelative * live->diagonal_, live->requested_);
   live->angleDeg_ = options.angleDeg;
   live->threads_ = std::max(1u, options.threads);
+  live->kept_ = options.kept;
   live->wake_ = options.wake;
   out.error = live->start();
   if (out.error.empty()) out.live = std::move(live);
@@ -48,7 +49,7 @@ std::string LiveTessellation::start() {
   params.chordal.value = finestAbsolute_;
   params.chordal.relative = false;
   params.angleDeg = angleDeg_;
-  auto created = brep::Tessellator::create(*model_, params);
+  auto created = brep::Tessellator::create(*model_, params, kept_ ? kept_->pool() : nullptr);
   if (!created.tessellator) return created.error;
   tess_ = std::move(created.tessellator);
   scene_.clear();
@@ -65,6 +66,7 @@ std::string LiveTessellation::start() {
   stream::StreamOptions streamOptions;
   streamOptions.threads = threads_;
   streamOptions.onLevelPublished = wake_;
+  streamOptions.kept = kept_;
   started_ = std::chrono::steady_clock::now();
   producer_ = std::make_unique<stream::ProgressiveStream>(*tess_, 0, streamOptions);
   consumer_ = std::make_unique<stream::StreamConsumer>(*producer_, model_->faces().size());

@@ -20,6 +20,7 @@
 #include "model_scene.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
+#include "stream/stream_threads.h"
 
 namespace cetview {
 
@@ -28,6 +29,8 @@ struct LiveOptions {
   double chordalAbsolute = 0;    // initial deflection (model units); 0: 0.1% of the diagonal
   double angleDeg = 20.0;
   unsigned threads = 1;
+  // Threads kept across models (the window's), or none: the tessellation starts its own.
+  stream::StreamThreads* kept = nullptr;
   // Called from a tessellation thread when a level is complete (the window posts an empty event
   // so its loop, asleep between frames, shows the level at once).
   std::function<void()> wake;
@@ -114,6 +117,7 @@ class LiveTessellation {
   std::chrono::steady_clock::time_point started_;
   double diagonal_ = 1, finestAbsolute_ = 0, requested_ = 0, angleDeg_ = 20;
   unsigned threads_ = 1;
+  stream::StreamThreads* kept_ = nullptr;  // LiveOptions::kept
   std::function<void()> wake_;
   bool held_ = false;
   int heldAt_ = 0;  // the level the producer stops at while held

@@ -23,6 +23,7 @@
 #include "progress_bar.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
+#include "stream/stream_threads.h"
 #include "terminal_load.h"
 
 namespace cetview {
@@ -105,12 +106,14 @@ int runRender(const RenderCli& cli) {
   if (std::string e = brep::parseAngle(cli.angle, params.angleDeg); !e.empty()) return fail(2, e);
   if (cli.threads < 1 || cli.threads > 256) return fail(2, "--threads must be 1 to 256");
 
+  // The tessellation threads start while the model loads (asleep until it has).
+  stream::StreamThreads kept(cli.threads);
   brep::LoadResult loaded = loadWithProgressBar(cli.model, "render");
   if (!loaded) return fail(2, loaded.error);
   const auto loadedAt = std::chrono::steady_clock::now();
   const brep::Model& model = *loaded.model;
   if (std::string e = checkDisplayable(model); !e.empty()) return fail(2, cli.model + ": " + e);
-  auto created = brep::Tessellator::create(model, params);
+  auto created = brep::Tessellator::create(model, params, kept.pool());
   if (!created.tessellator) return fail(2, created.error);
   brep::Tessellator& tess = *created.tessellator;
   // The workers start at once: level 0 tessellates while Vulkan starts up (lavapipe's pipeline
@@ -118,6 +121,7 @@ int runRender(const RenderCli& cli) {
   const int last = tess.lastLevel();
   stream::StreamOptions streamOptions;
   streamOptions.threads = cli.threads;
+  streamOptions.kept = &kept;
   stream::ProgressiveStream producer(tess, last, streamOptions);
   stream::StreamConsumer consumer(producer, model.faces().size());
 

@@ -31,6 +31,7 @@
 #include "frame_pacing.h"
 #include "live_tessellation.h"
 #include "open_dialog.h"
+#include "stream/stream_threads.h"
 #include "view_script.h"
 #include "window_glue.h"
 
@@ -122,7 +123,8 @@ struct TreeNode {
 
 class Viewer {
  public:
-  Viewer(const ViewCli& cli, WindowGlue& glue) : cli_(cli), glue_(glue), r_(glue.renderer()) {}
+  Viewer(const ViewCli& cli, WindowGlue& glue)
+      : cli_(cli), glue_(glue), r_(glue.renderer()), kept_(cli.threads) {}
 
   int run();
 
@@ -165,6 +167,9 @@ class Viewer {
   const ViewCli& cli_;
   WindowGlue& glue_;
   engine::Renderer& r_;
+  // The tessellation threads, started with the window and kept for every model it opens (before
+  // live_: they outlive its stream).
+  stream::StreamThreads kept_;
   std::unique_ptr<LiveTessellation> live_;                  // null until the first model has loaded
   std::unique_ptr<BackgroundLoad> loading_;                 // the load in progress, if any
   std::vector<std::unique_ptr<BackgroundLoad>> abandoned_;  // cancelled loads still running out
@@ -328,6 +333,7 @@ std::string Viewer::showModel(std::unique_ptr<brep::Model> model) {
   options.chordalAbsolute = absolute;
   options.angleDeg = angleSlider_;
   options.threads = cli_.threads;
+  options.kept = &kept_;
   options.wake = [] { glfwPostEmptyEvent(); };
   auto created = LiveTessellation::create(std::move(model), r_.scene(), options);
   if (!created.live) return created.error;

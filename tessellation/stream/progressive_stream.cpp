@@ -19,7 +19,8 @@ ProgressiveStream::ProgressiveStream(brep::Tessellator& tessellator, int targetL
   control_ = std::make_unique<SpscRing>(std::size_t{1} << 20);
   target_ = std::clamp(targetLevel, 0, tess_.lastLevel());
   start_ = std::chrono::steady_clock::now();
-  coordinator_ = std::thread([this] { coordinate(); });
+  onKept_ = options_.kept && options_.kept->launch([this] { coordinate(); });
+  if (!onKept_) coordinator_ = std::thread([this] { coordinate(); });
 }
 
 ProgressiveStream::~ProgressiveStream() {
@@ -29,7 +30,11 @@ ProgressiveStream::~ProgressiveStream() {
     cancel_ = true;
   }
   wake_.notify_all();
-  coordinator_.join();
+  if (onKept_) {
+    options_.kept->finish();
+  } else {
+    coordinator_.join();
+  }
 }
 
 void ProgressiveStream::setTargetLevel(int level) {

@@ -21,6 +21,7 @@
 
 #include "brep/tessellator.h"
 #include "stream/spsc_ring.h"
+#include "stream/stream_threads.h"
 #include "stream/update_records.h"
 
 namespace cetview::stream {
@@ -32,6 +33,10 @@ struct StreamOptions {
   // wakes a consumer that sleeps in an event loop (the window posts an empty event). Must be quick
   // and safe from any thread.
   std::function<void()> onLevelPublished;
+  // Threads kept across models (stream_threads.h): the coordinator runs on kept->launch() when that
+  // thread is free, else on a thread of the stream's own. The tessellator's pool is the caller's
+  // business (Tessellator::create(..., kept->pool())). Must outlive the stream.
+  StreamThreads* kept = nullptr;
 };
 
 // A snapshot of progress, for panels and the terminal.
@@ -94,7 +99,8 @@ class ProgressiveStream {
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   mutable std::condition_variable publishedChanged_;
-  std::thread coordinator_;
+  std::thread coordinator_;  // when the coordinator does not run on options_.kept
+  bool onKept_ = false;      // it runs on options_.kept
 };
 
 }  // namespace cetview::stream

@@ -1,7 +1,7 @@
 // The tessellator's thread pool (worker_pool.h): every index of a parallel section runs exactly
 // once, pool threads do join, a helper's exception reaches the caller, a run made while another
 // holds the pool works alone instead of waiting, and the pool is reused across runs.
-#include "worker_pool.h"
+#include "brep/worker_pool.h"
 
 #include <gtest/gtest.h>
 
@@ -17,21 +17,28 @@
 namespace cetview::brep {
 namespace {
 
+// A parallel section of 300 items of 50 us each on three threads: every item runs once (checked
+// here); adds the threads that ran items to `threads`.
+void runSection(WorkerPool& pool, std::set<std::thread::id>& threads) {
+  std::mutex mutex;
+  std::vector<std::atomic<int>> hits(300);
+  parallelFor(pool, hits.size(), 3, [&](std::size_t i) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      threads.insert(std::this_thread::get_id());
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(50));
+    hits[i].fetch_add(1);
+  });
+  for (const auto& h : hits) ASSERT_EQ(h.load(), 1);
+}
+
 TEST(WorkerPool, EveryIndexRunsOnceAndThePoolThreadsHelp) {
   WorkerPool pool;
-  std::mutex mutex;
   std::set<std::thread::id> threads;
   for (int run = 0; run < 20; ++run) {
-    std::vector<std::atomic<int>> hits(300);
-    parallelFor(pool, hits.size(), 3, [&](std::size_t i) {
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        threads.insert(std::this_thread::get_id());
-      }
-      std::this_thread::sleep_for(std::chrono::microseconds(50));
-      hits[i].fetch_add(1);
-    });
-    for (const auto& h : hits) ASSERT_EQ(h.load(), 1) << "run " << run;
+    SCOPED_TRACE(run);
+    runSection(pool, threads);
   }
   // 300 items of 50 us each: the two pool threads wake long before the caller is through.
   EXPECT_EQ(threads.size(), 3u);
@@ -77,6 +84,19 @@ TEST(WorkerPool, AHelpersExceptionReachesTheCaller) {
   std::atomic<int> sum{0};
   parallelFor(pool, 100, 2, [&](std::size_t) { ++sum; });
   EXPECT_EQ(sum.load(), 100);
+}
+
+// start() makes the helpers ahead of the first run (a viewer starts them before a model loads);
+// runs then use those threads and start no more.
+TEST(WorkerPool, HelpersStartedAheadServeTheRuns) {
+  WorkerPool pool;
+  EXPECT_EQ(pool.start(1), 0u);  // one thread: the caller alone
+  EXPECT_EQ(pool.start(3), 2u);
+  EXPECT_EQ(pool.start(2), 2u);  // never fewer
+  std::set<std::thread::id> threads;
+  runSection(pool, threads);
+  EXPECT_EQ(threads.size(), 3u);
+  EXPECT_EQ(pool.start(3), 2u);  // the run started no thread of its own
 }
 
 TEST(WorkerPool, ARunWhileAnotherHoldsThePoolWorksAlone) {

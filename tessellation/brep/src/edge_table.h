@@ -15,9 +15,9 @@
 #include <gp_Pnt.hxx>
 
 #include "brep/tessellator.h"
+#include "brep/worker_pool.h"
 #include "bspline_direct.h"
 #include "uv_axis.h"
-#include "worker_pool.h"
 
 namespace cetview::brep {
 

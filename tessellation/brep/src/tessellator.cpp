@@ -58,13 +58,22 @@ static std::vector<Level> edgeTolerances(std::vector<Level> schedule) {
   return schedule;
 }
 
-TessellatorImpl::TessellatorImpl(const Model& m, double c, double a, std::vector<Level> s)
-    : model(m), chordal(c), angle(a), schedule(std::move(s)), edges(m.impl(), edgeTolerances(schedule)), faces(m.faces().size()) {}
+TessellatorImpl::TessellatorImpl(const Model& m, double c, double a, std::vector<Level> s,
+                                 std::shared_ptr<WorkerPool> p)
+    : model(m),
+      chordal(c),
+      angle(a),
+      schedule(std::move(s)),
+      edges(m.impl(), edgeTolerances(schedule)),
+      faces(m.faces().size()),
+      poolHolder(p ? std::move(p) : std::make_shared<WorkerPool>()),
+      pool(*poolHolder) {}
 
 Tessellator::Tessellator(std::unique_ptr<TessellatorImpl> impl) : impl_(std::move(impl)) {}
 Tessellator::~Tessellator() = default;
 
-Tessellator::CreateResult Tessellator::create(const Model& model, const MeshParams& params) {
+Tessellator::CreateResult Tessellator::create(const Model& model, const MeshParams& params,
+                                              std::shared_ptr<WorkerPool> pool) {
   CreateResult result;
   double chordal = 0;
   result.error = resolveDeflection(params.chordal, model.bounds().diagonal(), chordal);
@@ -74,8 +83,9 @@ Tessellator::CreateResult Tessellator::create(const Model& model, const MeshPara
     return result;
   }
   const double angle = params.angleDeg * M_PI / 180.0;
-  auto impl = std::make_unique<TessellatorImpl>(model, chordal, angle,
-                                                planLevels(chordal, angle, model.bounds().diagonal(), params.progressive));
+  auto impl = std::make_unique<TessellatorImpl>(
+      model, chordal, angle, planLevels(chordal, angle, model.bounds().diagonal(), params.progressive),
+      std::move(pool));
   impl->maxPointsPerFaceLevel = params.maxPointsPerFaceLevel;
   result.tessellator.reset(new Tessellator(std::move(impl)));
   return result;

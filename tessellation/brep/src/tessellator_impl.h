@@ -16,7 +16,8 @@ namespace cetview::brep {
 
 class TessellatorImpl {
  public:
-  TessellatorImpl(const Model& model, double chordal, double angle, std::vector<Level> schedule);
+  TessellatorImpl(const Model& model, double chordal, double angle, std::vector<Level> schedule,
+                  std::shared_ptr<WorkerPool> pool);
 
   struct FaceState {
     std::unique_ptr<SurfaceEval> eval;   // made with the edges' first level, handed to the mesher
@@ -39,8 +40,11 @@ class TessellatorImpl {
   std::atomic<int> edgeLevel{-1};
   std::vector<FaceState> faces;
   bool surfacesReady = false;  // prepareSurfaces() has completed
-  WorkerPool pool;             // threads for every parallel section (runWorkers(), the edges, the surfaces)
-  WorkSharing sharing{pool};   // runWorkers()' idle workers, lent to the faces' refinement passes
+  // Threads for every parallel section (runWorkers(), the edges, the surfaces): the caller's pool
+  // or one of the tessellator's own.
+  std::shared_ptr<WorkerPool> poolHolder;
+  WorkerPool& pool;
+  WorkSharing sharing{pool};  // runWorkers()' idle workers, lent to the faces' refinement passes
 
   // Every face's SurfaceEval, with `threads` threads, and the edges' face scales from them: the
   // first level's edges need the scales, its faces the evaluators. Returns false when cancelled

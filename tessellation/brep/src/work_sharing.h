@@ -13,7 +13,7 @@
 #include <mutex>
 #include <vector>
 
-#include "worker_pool.h"
+#include "brep/worker_pool.h"
 
 namespace cetview::brep {
 

@@ -1,4 +1,4 @@
-#include "worker_pool.h"
+#include "brep/worker_pool.h"
 
 #include <exception>
 #include <system_error>
@@ -19,6 +19,22 @@ std::uint64_t WorkerPool::joins() const {
   return joins_;
 }
 
+void WorkerPool::startHelpers(unsigned helpers) {
+  while (threads_.size() < helpers) {
+    try {
+      threads_.emplace_back([this] { loop(); });
+    } catch (const std::system_error&) {
+      return;  // fewer helpers; the callers do the rest
+    }
+  }
+}
+
+unsigned WorkerPool::start(unsigned threads) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  startHelpers(threads > 1 ? threads - 1 : 0);
+  return static_cast<unsigned>(threads_.size());
+}
+
 void WorkerPool::run(unsigned threads, const std::function<void(unsigned)>& body) {
   const unsigned helpers = threads > 1 ? threads - 1 : 0;
   bool shared = false;
@@ -28,13 +44,7 @@ void WorkerPool::run(unsigned threads, const std::function<void(unsigned)>& body
     if (!busy_ && helpers > 0) {
       shared = true;
       busy_ = true;
-      while (threads_.size() < helpers) {
-        try {
-          threads_.emplace_back([this] { loop(); });
-        } catch (const std::system_error&) {
-          break;  // fewer helpers; the caller does the rest
-        }
-      }
+      startHelpers(helpers);
       body_ = &body;
       wanted_ = helpers;
       joined_ = 0;

@@ -4,10 +4,12 @@
 // against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU);
 // like the window, the loop draws a frame only when something new arrived.
 //   progressive_bench [--threads N] [--deflection 0.1%] [--repeat R] [--no-brepmesh]
-//                     [--direct-draws | --indirect-draws] MODEL...
+//                     [--direct-draws | --indirect-draws] [--fresh-threads] MODEL...
 // (MODEL: a file or "demo"; --repeat loads each model R times, BRepMesh once; --no-brepmesh skips
 // the reference, for quick runs of the progressive side alone; --direct-draws and --indirect-draws
 // force one drawing path (gpu_scene.h) where the device would take the other, to compare them.
+// The tessellation threads are started before the first model loads and kept for all, as the
+// window keeps them (stream_threads.h); --fresh-threads has each model start its own instead.
 // "idle cpu" is the CPU time of drawing one idle frame, driver included; "draws" its draw calls;
 // "1st faults" the process's page faults from the end of loading to the first complete frame: on
 // the project's virtual machines each costs about 10 us, so the memory a level first touches is
@@ -19,6 +21,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -32,6 +35,7 @@
 #include "model_scene.h"
 #include "stream/progressive_stream.h"
 #include "stream/stream_consumer.h"
+#include "stream/stream_threads.h"
 
 namespace {
 
@@ -66,7 +70,8 @@ struct Row {
 enum class Draws { kDefault, kDirect, kIndirect };
 
 Row measure(const std::string& path, const cetview::brep::MeshParams& params, unsigned threads,
-            const cetview::engine::Device& device, bool reference, double brepmeshMs, Draws draws) {
+            const cetview::engine::Device& device, bool reference, double brepmeshMs, Draws draws,
+            cetview::stream::StreamThreads* kept) {
   namespace brep = cetview::brep;
   namespace engine = cetview::engine;
   Row row;
@@ -108,7 +113,7 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   row.faces = loaded.model->faces().size();
   const auto start = Clock::now();  // the model finished loading
   const long startFaults = pageFaults();
-  auto created = brep::Tessellator::create(*loaded.model, params);
+  auto created = brep::Tessellator::create(*loaded.model, params, kept ? kept->pool() : nullptr);
   if (!created.tessellator) {
     row.error = created.error;
     return row;
@@ -118,6 +123,7 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   const int last = created.tessellator->lastLevel();
   cetview::stream::StreamOptions options;
   options.threads = threads;
+  options.kept = kept;
   cetview::stream::ProgressiveStream producer(*created.tessellator, last, options);
   cetview::stream::StreamConsumer consumer(producer, row.faces);
   consumer.setShowLevel(last, link);
@@ -188,6 +194,7 @@ int main(int argc, char** argv) {
   int repeat = 1;
   bool reference = true;
   Draws draws = Draws::kDefault;
+  bool freshThreads = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
@@ -197,6 +204,8 @@ int main(int argc, char** argv) {
       reference = false;
     } else if (!std::strcmp(argv[i], "--direct-draws")) {
       draws = Draws::kDirect;
+    } else if (!std::strcmp(argv[i], "--fresh-threads")) {
+      freshThreads = true;
     } else if (!std::strcmp(argv[i], "--indirect-draws")) {
       draws = Draws::kIndirect;
     } else if (!std::strcmp(argv[i], "--deflection") && i + 1 < argc) {
@@ -219,17 +228,21 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "progressive_bench: %s\n", device.error().message.c_str());
     return 1;
   }
-  std::printf("device: %s, %u tessellation thread(s), 1280x720%s\n", device->name.c_str(), threads,
+  std::printf("device: %s, %u tessellation thread(s)%s, 1280x720%s\n", device->name.c_str(), threads,
+              freshThreads ? " started per model" : "",
               draws == Draws::kDirect     ? ", draws one by one"
               : draws == Draws::kIndirect ? ", indirect draws"
                                           : "");
+  std::unique_ptr<cetview::stream::StreamThreads> kept;
+  if (!freshThreads) kept = std::make_unique<cetview::stream::StreamThreads>(threads);
   std::printf("%-34s %6s %11s %11s %7s %10s %11s %12s %10s %8s %6s %9s %11s  %s\n", "model", "faces",
               "brepmesh ms", "1st frame", "ratio", "1st faults", "final ms", "max frame ms", "idle ms",
               "idle cpu", "draws", "MB/frame", "max MB/frm", "ms per level");
   double brepmeshMs = 0;  // of the model's first run, shown again on its repeats
   for (int run = 0; run < repeat * static_cast<int>(models.size()); ++run) {
     const std::string& m = models[static_cast<std::size_t>(run / repeat)];
-    const Row row = measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs, draws);
+    const Row row =
+        measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs, draws, kept.get());
     brepmeshMs = row.brepmesh;
     const std::string name = m.size() > 34 ? "..." + m.substr(m.size() - 31) : m;
     if (!row.error.empty()) {

@@ -36,6 +36,7 @@
 
 #include "brep/model.h"
 #include "brep/tolerance.h"
+#include "brep/worker_pool.h"
 
 namespace cetview::brep {
 
@@ -84,8 +85,10 @@ class Tessellator {
     std::string error;
   };
   // Resolves params against the model's bounding box and plans the levels. Fails (one line) for a
-  // deflection absurd for this model.
-  static CreateResult create(const Model& model, const MeshParams& params);
+  // deflection absurd for this model. Parallel sections run on `pool` when given (shared with
+  // other tessellators: one whose run finds it busy works alone), else on a pool of its own.
+  static CreateResult create(const Model& model, const MeshParams& params,
+                             std::shared_ptr<WorkerPool> pool = nullptr);
   ~Tessellator();
 
   const Model& model() const;

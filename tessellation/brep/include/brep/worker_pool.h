@@ -3,6 +3,10 @@
 // more than all of level 0 of a small model, whose level runs four or five sections. Pool threads
 // sleep between sections. The caller starts on the work at once and a pool thread joins only
 // while the caller's own call still runs, so a section never waits for a thread to wake.
+//
+// A tessellator makes its own pool unless it is given one (Tessellator::create): the viewer keeps
+// one pool for every model it opens and starts its threads before the first model has loaded, so
+// that no model's first level waits for a thread to start (0.1-0.3 ms each here).
 #pragma once
 
 #include <condition_variable>
@@ -31,11 +35,17 @@ class WorkerPool {
   // body(0) alone.
   void run(unsigned threads, const std::function<void(unsigned)>& body);
 
+  // Starts the helpers a run with `threads` threads takes (threads - 1) now rather than at the
+  // first such run. Returns the number of helper threads the pool has (fewer where one could not
+  // start).
+  unsigned start(unsigned threads);
+
   // Times a pool thread joined a run (tests).
   std::uint64_t joins() const;
 
  private:
   void loop();
+  void startHelpers(unsigned helpers);  // mutex_ held
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;  // pool threads: a run opened, or stop

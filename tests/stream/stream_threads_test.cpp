@@ -1,0 +1,105 @@
+// Threads kept across models (stream_threads.h): streams made one after another run their
+// coordinator on the one kept thread and their workers on the one kept pool, and end in the same
+// meshes as a tessellator and stream with threads of their own; a second stream made while the
+// kept thread is taken starts its own and completes too. Run under -DCETVIEW_SANITIZE=thread.
+#include "stream/stream_threads.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "brep/model.h"
+#include "brep/tessellator.h"
+#include "stream/progressive_stream.h"
+#include "stream/stream_consumer.h"
+
+namespace cetview::stream {
+namespace {
+
+// What a renderer keeps: per face, the triangles' corner positions.
+struct Mirror : MeshSink {
+  std::vector<StreamVertex> vertices;
+  std::vector<std::vector<float>> faces;
+  explicit Mirror(std::size_t faceCount) : faces(faceCount) {}
+  std::uint32_t appendVertices(const StreamVertex* v, std::size_t count) override {
+    const auto first = static_cast<std::uint32_t>(vertices.size());
+    vertices.insert(vertices.end(), v, v + count);
+    return first;
+  }
+  void setFaceIndices(std::uint32_t face, const std::uint32_t* idx, std::size_t count) override {
+    std::vector<float>& out = faces.at(face);
+    out.clear();
+    for (std::size_t i = 0; i < count; ++i)
+      out.insert(out.end(), vertices.at(idx[i]).position, vertices.at(idx[i]).position + 3);
+  }
+  void setEdgePolyline(std::uint32_t, const float*, std::size_t) override {}
+};
+
+std::unique_ptr<brep::Model> demoModel() {
+  auto loaded = brep::loadModel("demo");
+  EXPECT_TRUE(loaded) << loaded.error;
+  return std::move(loaded.model);
+}
+
+brep::MeshParams params(double chordal) {
+  brep::MeshParams p;
+  p.chordal.value = chordal;  // relative to the diagonal
+  return p;
+}
+
+// One stream from a new tessellator to its last level; returns the consumer's faces.
+std::vector<std::vector<float>> streamToEnd(const brep::Model& model, const brep::MeshParams& p,
+                                            StreamThreads* kept) {
+  auto created = brep::Tessellator::create(model, p, kept ? kept->pool() : nullptr);
+  EXPECT_TRUE(created.tessellator) << created.error;
+  brep::Tessellator& tess = *created.tessellator;
+  StreamOptions o;
+  o.threads = 2;
+  o.kept = kept;
+  ProgressiveStream stream(tess, tess.lastLevel(), o);
+  StreamConsumer consumer(stream, model.faces().size());
+  Mirror mirror(model.faces().size());
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (consumer.completeLevel() < tess.lastLevel() && std::chrono::steady_clock::now() < deadline) {
+    if (consumer.poll(1 << 20, mirror) == 0)
+      stream.waitForLevel(consumer.completeLevel() + 1, std::chrono::milliseconds(1));
+  }
+  EXPECT_EQ(consumer.completeLevel(), tess.lastLevel());
+  return mirror.faces;
+}
+
+TEST(StreamThreads, StreamsOneAfterAnotherUseTheKeptThreads) {
+  const auto model = demoModel();
+  const auto coarse = streamToEnd(*model, params(0.004), nullptr);
+  const auto fine = streamToEnd(*model, params(0.002), nullptr);
+  StreamThreads kept(2);
+  EXPECT_EQ(kept.threads(), 2u);
+  EXPECT_EQ(kept.pool()->start(2), 1u);  // the helper is there before any model
+  EXPECT_EQ(streamToEnd(*model, params(0.004), &kept), coarse);
+  EXPECT_EQ(kept.tasksRun(), 1u);  // the stream's coordinator ran on the kept thread
+  EXPECT_EQ(streamToEnd(*model, params(0.002), &kept), fine);
+  EXPECT_EQ(kept.tasksRun(), 2u);
+  EXPECT_GT(kept.pool()->joins(), 0u);   // the kept helper worked for the tessellators
+  EXPECT_EQ(kept.pool()->start(2), 1u);  // and no other helper was started
+}
+
+TEST(StreamThreads, AStreamMadeWhileTheThreadIsTakenStartsItsOwn) {
+  const auto model = demoModel();
+  const auto clean = streamToEnd(*model, params(0.002), nullptr);
+  StreamThreads kept(2);
+  std::vector<std::vector<float>> first, second;
+  std::thread other([&] { first = streamToEnd(*model, params(0.002), &kept); });
+  second = streamToEnd(*model, params(0.002), &kept);
+  other.join();
+  EXPECT_EQ(first, clean);
+  EXPECT_EQ(second, clean);
+  // Whichever came first ran on the kept thread unless it had ended before the other began.
+  EXPECT_GE(kept.tasksRun(), 1u);
+  EXPECT_LE(kept.tasksRun(), 2u);
+}
+
+}  // namespace
+}  // namespace cetview::stream
