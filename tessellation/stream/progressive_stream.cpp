@@ -15,12 +15,37 @@ ProgressiveStream::ProgressiveStream(brep::Tessellator& tessellator, int targetL
   std::stable_sort(order_.begin(), order_.end(),
                    [&](brep::FaceId a, brep::FaceId b) { return faces[a].area > faces[b].area; });
   sent_.assign(faces.size(), 0);
-  for (unsigned i = 0; i < options_.threads; ++i) rings_.push_back(std::make_unique<SpscRing>(options_.ringBytes));
-  control_ = std::make_unique<SpscRing>(std::size_t{1} << 20);
+  onKept_ = options_.kept && options_.kept->acquire();
+  try {
+    setUpRings();
+  } catch (...) {
+    if (onKept_) options_.kept->release();
+    throw;
+  }
   target_ = std::clamp(targetLevel, 0, tess_.lastLevel());
   start_ = std::chrono::steady_clock::now();
-  onKept_ = options_.kept && options_.kept->launch([this] { coordinate(); });
-  if (!onKept_) coordinator_ = std::thread([this] { coordinate(); });
+  if (onKept_) {
+    options_.kept->launch([this] { coordinate(); });
+  } else {
+    coordinator_ = std::thread([this] { coordinate(); });
+  }
+}
+
+void ProgressiveStream::setUpRings() {
+  StreamThreads* kept = onKept_ ? options_.kept : nullptr;
+  if (kept && kept->threads() == options_.threads && kept->ringBytes() == options_.ringBytes) {
+    for (unsigned i = 0; i < options_.threads; ++i) rings_.push_back(&kept->workerRing(i));
+    control_ = &kept->controlRing();
+    for (SpscRing* ring : rings_) ring->reset();
+    control_->reset();
+    return;
+  }
+  for (unsigned i = 0; i < options_.threads; ++i) {
+    ownRings_.push_back(std::make_unique<SpscRing>(options_.ringBytes));
+    rings_.push_back(ownRings_.back().get());
+  }
+  ownRings_.push_back(std::make_unique<SpscRing>(kControlRingBytes));
+  control_ = ownRings_.back().get();
 }
 
 ProgressiveStream::~ProgressiveStream() {

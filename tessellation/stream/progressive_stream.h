@@ -28,14 +28,15 @@ namespace cetview::stream {
 
 struct StreamOptions {
   unsigned threads = 1;
-  std::size_t ringBytes = std::size_t{4} << 20;  // per worker; larger records are fragmented
+  std::size_t ringBytes = kDefaultRingBytes;  // per worker; larger records are fragmented
   // Called on the coordinator thread once a level's completion record is in the control ring:
   // wakes a consumer that sleeps in an event loop (the window posts an empty event). Must be quick
   // and safe from any thread.
   std::function<void()> onLevelPublished;
-  // Threads kept across models (stream_threads.h): the coordinator runs on kept->launch() when that
-  // thread is free, else on a thread of the stream's own. The tessellator's pool is the caller's
-  // business (Tessellator::create(..., kept->pool())). Must outlive the stream.
+  // Threads and rings kept across models (stream_threads.h): the coordinator runs on the kept thread
+  // and writes into the kept rings (when they are for as many workers of ringBytes) when no other
+  // stream holds them, else on a thread and rings of the stream's own. The tessellator's pool is
+  // the caller's business (Tessellator::create(..., kept->pool())). Must outlive the stream.
   StreamThreads* kept = nullptr;
 };
 
@@ -72,8 +73,11 @@ class ProgressiveStream {
   std::size_t workerRingCount() const { return rings_.size(); }
   SpscRing& workerRing(std::size_t i) { return *rings_[i]; }
   SpscRing& controlRing() { return *control_; }
+  // The coordinator runs on StreamOptions::kept (tests).
+  bool onKeptThread() const { return onKept_; }
 
  private:
+  void setUpRings();  // the kept rings, emptied, or rings of its own
   void coordinate();
   bool runLevel(int level);
   void publishFace(RecordWriter& writer, std::vector<std::uint8_t>& buffer, brep::FaceId face, int level,
@@ -85,8 +89,9 @@ class ProgressiveStream {
   StreamOptions options_;
   std::vector<brep::FaceId> order_;  // faces by decreasing area
   std::vector<std::uint32_t> sent_;  // per face: vertices already published
-  std::vector<std::unique_ptr<SpscRing>> rings_;
-  std::unique_ptr<SpscRing> control_;
+  std::vector<SpscRing*> rings_;     // the kept rings or ownRings_
+  SpscRing* control_ = nullptr;
+  std::vector<std::unique_ptr<SpscRing>> ownRings_;  // own rings_ and control_, when not kept
   std::chrono::steady_clock::time_point start_;
 
   std::atomic<int> target_{0};

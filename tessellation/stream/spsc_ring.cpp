@@ -76,6 +76,12 @@ bool SpscRing::tryRead(View& view) {
 
 void SpscRing::release() { read_.store(pendingRelease_, std::memory_order_release); }
 
+void SpscRing::reset() {
+  write_.store(0, std::memory_order_relaxed);
+  read_.store(0, std::memory_order_relaxed);
+  pendingRelease_ = 0;
+}
+
 std::size_t SpscRing::usedBytes() const {
   return static_cast<std::size_t>(write_.load(std::memory_order_acquire) - read_.load(std::memory_order_acquire));
 }

@@ -57,6 +57,9 @@ class SpscRing {
   // Bytes in use (approximate when read while the other side works).
   std::size_t usedBytes() const;
 
+  // Empties the ring for a new producer and consumer; neither side may be using it.
+  void reset();
+
  private:
   static constexpr std::size_t kHeader = 8;
   static constexpr std::uint32_t kSkip = 0xFFFFFFFFu;  // tag of a header that pads the array's tail

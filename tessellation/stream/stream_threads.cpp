@@ -6,9 +6,11 @@
 
 namespace cetview::stream {
 
-StreamThreads::StreamThreads(unsigned threads)
-    : threads_(std::max(1u, threads)), pool_(std::make_shared<brep::WorkerPool>()) {
+StreamThreads::StreamThreads(unsigned threads, std::size_t ringBytes)
+    : threads_(std::max(1u, threads)), ringBytes_(ringBytes), pool_(std::make_shared<brep::WorkerPool>()) {
   pool_->start(threads_);
+  for (unsigned i = 0; i < threads_; ++i) rings_.push_back(std::make_unique<SpscRing>(ringBytes_));
+  control_ = std::make_unique<SpscRing>(kControlRingBytes);
   try {
     thread_ = std::thread([this] { loop(); });
   } catch (const std::system_error&) {
@@ -26,15 +28,27 @@ StreamThreads::~StreamThreads() {
   if (thread_.joinable()) thread_.join();
 }
 
-bool StreamThreads::launch(std::function<void()> task) {
+bool StreamThreads::acquire() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (busy_ || !thread_.joinable()) return false;
+  busy_ = true;
+  return true;
+}
+
+void StreamThreads::launch(std::function<void()> task) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (busy_ || !thread_.joinable()) return false;
     task_ = std::move(task);
-    busy_ = true;
   }
   changed_.notify_all();
-  return true;
+}
+
+void StreamThreads::release() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    busy_ = false;
+  }
+  changed_.notify_all();
 }
 
 void StreamThreads::finish() {

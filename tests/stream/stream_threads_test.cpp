@@ -1,7 +1,8 @@
-// Threads kept across models (stream_threads.h): streams made one after another run their
-// coordinator on the one kept thread and their workers on the one kept pool, and end in the same
-// meshes as a tessellator and stream with threads of their own; a second stream made while the
-// kept thread is taken starts its own and completes too. Run under -DCETVIEW_SANITIZE=thread.
+// Threads and rings kept across models (stream_threads.h): streams made one after another run their
+// coordinator on the one kept thread, their workers on the one kept pool and write into the kept
+// rings, and end in the same meshes as a tessellator and stream with threads of their own; a stream
+// after one dropped with records unread reads none of them; a second stream made while the kept
+// thread is taken starts its own and completes too. Run under -DCETVIEW_SANITIZE=thread.
 #include "stream/stream_threads.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,8 @@ brep::MeshParams params(double chordal) {
   return p;
 }
 
-// One stream from a new tessellator to its last level; returns the consumer's faces.
+// One stream from a new tessellator to its last level; returns the consumer's faces. The consumer's
+// level records must be this stream's own.
 std::vector<std::vector<float>> streamToEnd(const brep::Model& model, const brep::MeshParams& p,
                                             StreamThreads* kept) {
   auto created = brep::Tessellator::create(model, p, kept ? kept->pool() : nullptr);
@@ -68,6 +70,12 @@ std::vector<std::vector<float>> streamToEnd(const brep::Model& model, const brep
       stream.waitForLevel(consumer.completeLevel() + 1, std::chrono::milliseconds(1));
   }
   EXPECT_EQ(consumer.completeLevel(), tess.lastLevel());
+  const auto& stats = consumer.levelStats();
+  EXPECT_EQ(stats.size(), tess.schedule().size());
+  for (std::size_t k = 0; k < stats.size() && k < tess.schedule().size(); ++k) {
+    EXPECT_EQ(stats[k].chordal, tess.schedule()[k].chordal) << "level " << k;
+    EXPECT_EQ(stats[k].triangles, tess.triangleCount(static_cast<int>(k))) << "level " << k;
+  }
   return mirror.faces;
 }
 
@@ -84,6 +92,28 @@ TEST(StreamThreads, StreamsOneAfterAnotherUseTheKeptThreads) {
   EXPECT_EQ(kept.tasksRun(), 2u);
   EXPECT_GT(kept.pool()->joins(), 0u);   // the kept helper worked for the tessellators
   EXPECT_EQ(kept.pool()->start(2), 1u);  // and no other helper was started
+}
+
+// A stream dropped after its first level, its records unread, leaves them in the kept rings; the
+// next stream empties them first (without, its consumer took the dropped stream's level 0, of
+// another tolerance, for its own).
+TEST(StreamThreads, AStreamAfterOneDroppedUnreadReadsOnlyItsOwnRecords) {
+  const auto model = demoModel();
+  const auto clean = streamToEnd(*model, params(0.002), nullptr);
+  StreamThreads kept(2);
+  {
+    auto dropped = brep::Tessellator::create(*model, params(0.01), kept.pool()).tessellator;
+    StreamOptions o;
+    o.threads = 2;
+    o.kept = &kept;
+    ProgressiveStream stream(*dropped, dropped->lastLevel(), o);
+    EXPECT_TRUE(stream.onKeptThread());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (stream.progress().lastCompleteLevel < 0 && std::chrono::steady_clock::now() < deadline)
+      stream.waitForLevel(0, std::chrono::milliseconds(1));
+    EXPECT_GT(kept.controlRing().usedBytes(), 0u);  // its level 0's records, never read
+  }
+  EXPECT_EQ(streamToEnd(*model, params(0.002), &kept), clean);
 }
 
 TEST(StreamThreads, AStreamMadeWhileTheThreadIsTakenStartsItsOwn) {
