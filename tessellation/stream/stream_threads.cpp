@@ -14,7 +14,7 @@ StreamThreads::StreamThreads(unsigned threads, std::size_t ringBytes)
   try {
     thread_ = std::thread([this] { loop(); });
   } catch (const std::system_error&) {
-    // No coordinator thread: launch() refuses, and each stream starts its own.
+    // No coordinator thread: acquire() refuses, and each stream starts its own thread and rings.
   }
 }
 
