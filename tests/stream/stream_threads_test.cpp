@@ -9,7 +9,6 @@
 
 #include <chrono>
 #include <memory>
-#include <thread>
 #include <vector>
 
 #include "brep/model.h"
@@ -52,9 +51,11 @@ brep::MeshParams params(double chordal) {
 }
 
 // One stream from a new tessellator to its last level; returns the consumer's faces. The consumer's
-// level records must be this stream's own.
+// level records must be this stream's own. `onKept` and `keptRings`, when given, say whether the
+// stream ran its coordinator on the kept thread and wrote into the kept rings.
 std::vector<std::vector<float>> streamToEnd(const brep::Model& model, const brep::MeshParams& p,
-                                            StreamThreads* kept) {
+                                            StreamThreads* kept, bool* onKept = nullptr,
+                                            bool* keptRings = nullptr) {
   auto created = brep::Tessellator::create(model, p, kept ? kept->pool() : nullptr);
   EXPECT_TRUE(created.tessellator) << created.error;
   brep::Tessellator& tess = *created.tessellator;
@@ -62,6 +63,8 @@ std::vector<std::vector<float>> streamToEnd(const brep::Model& model, const brep
   o.threads = 2;
   o.kept = kept;
   ProgressiveStream stream(tess, tess.lastLevel(), o);
+  if (onKept) *onKept = stream.onKeptThread();
+  if (keptRings) *keptRings = kept && &stream.workerRing(0) == &kept->workerRing(0);
   StreamConsumer consumer(stream, model.faces().size());
   Mirror mirror(model.faces().size());
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -116,19 +119,30 @@ TEST(StreamThreads, AStreamAfterOneDroppedUnreadReadsOnlyItsOwnRecords) {
   EXPECT_EQ(streamToEnd(*model, params(0.002), &kept), clean);
 }
 
+// While one stream holds the kept thread and rings (the window's model, say), another stream starts
+// a thread and rings of its own and completes; once the first is gone the next one gets them again.
+// The two tessellators share the kept pool meanwhile.
 TEST(StreamThreads, AStreamMadeWhileTheThreadIsTakenStartsItsOwn) {
   const auto model = demoModel();
   const auto clean = streamToEnd(*model, params(0.002), nullptr);
   StreamThreads kept(2);
-  std::vector<std::vector<float>> first, second;
-  std::thread other([&] { first = streamToEnd(*model, params(0.002), &kept); });
-  second = streamToEnd(*model, params(0.002), &kept);
-  other.join();
-  EXPECT_EQ(first, clean);
-  EXPECT_EQ(second, clean);
-  // Whichever came first ran on the kept thread unless it had ended before the other began.
-  EXPECT_GE(kept.tasksRun(), 1u);
-  EXPECT_LE(kept.tasksRun(), 2u);
+  bool onKept = true, keptRings = true;
+  {
+    auto heldTess = brep::Tessellator::create(*model, params(0.002), kept.pool()).tessellator;
+    StreamOptions o;
+    o.threads = 2;
+    o.kept = &kept;
+    ProgressiveStream held(*heldTess, heldTess->lastLevel(), o);
+    EXPECT_TRUE(held.onKeptThread());
+    EXPECT_EQ(streamToEnd(*model, params(0.002), &kept, &onKept, &keptRings), clean);
+    EXPECT_FALSE(onKept);
+    EXPECT_FALSE(keptRings);
+  }
+  EXPECT_EQ(kept.tasksRun(), 1u);  // the held stream's coordinator alone ran there
+  EXPECT_EQ(streamToEnd(*model, params(0.002), &kept, &onKept, &keptRings), clean);
+  EXPECT_TRUE(onKept);
+  EXPECT_TRUE(keptRings);
+  EXPECT_EQ(kept.tasksRun(), 2u);
 }
 
 }  // namespace
