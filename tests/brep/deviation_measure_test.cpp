@@ -129,6 +129,28 @@ TEST(CollapsedPastAKnot, EveryLevelMeasuresWithinItsTolerance) {
                            test::relative(0.00023310095909219373, 29.250858319981688));
 }
 
+// seam_collapsed_past_a_knot.brep (face_fuzz seed 1818, input 213): a bilinear B-spline patch,
+// periodic in u over 0.001 of parameter, every pole past the third row of v one point. Along the
+// seam the surface runs straight from a pole to that point (v = -999.9995 to the knot -999.99933)
+// and stays there. A zero-area triangle of levels 6 and 7 lies along the seam: its corners at
+// v = -999.9995, 3e-9 of v before the knot and -999.999, all three on that straight run in space.
+// A sample midway between the last two is as far from the seed before the knot as from those on
+// the point past it, which was the nearest; no projection moves from there (the surface has no
+// derivative), and it read 0.0279, 4.37x level 7's tolerance of 0.0064. The measure now also
+// searches the line around the nearest seed by golden sections.
+TEST(CollapsedPastAKnot, AZeroAreaTriangleAlongTheSeamMeasuresOnTheSeam) {
+  const TopoDS_Face face = firstFace("seam_collapsed_past_a_knot.brep");
+  ASSERT_FALSE(face.IsNull());
+  const double uv[6] = {-999.99899999999991, -999.99933354482209, -999.9989999999998,
+                        -999.9989999999998,  -999.9989999999998,  -999.9994999999999};
+  EXPECT_LT(measuredTriangle(SurfaceEval(face), uv), 1e-6) << "0.0279 from the seeds alone";
+}
+
+TEST(CollapsedPastAKnot, ASeamAlongTheCollapseMeasuresWithinItsTolerance) {
+  test::testDataEveryLevel("seam_collapsed_past_a_knot.brep",
+                           test::relative(0.00010150801690357978, 47.501945525291831));
+}
+
 TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
   // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
   // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface

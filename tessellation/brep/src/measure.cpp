@@ -19,6 +19,8 @@ namespace {
 
 // Steps of the grid over a triangle's (u, v) that the measure seeds its projections from.
 constexpr int kSeedSteps = 16;
+// Even steps along a line of (u, v) (a triangle without area there): as many points as the grid has.
+constexpr int kLineSteps = (kSeedSteps + 1) * (kSeedSteps + 2) / 2;
 
 // Seeds along a line of (u, v): `at(s)` seeds the surface point at s in [0, 1] of the line and
 // returns it. Points at as many even steps as the measure's seed grid has, and between two
@@ -29,7 +31,6 @@ constexpr int kSeedSteps = 16;
 // the surface, read 2.38x its tolerance.
 template <class At>
 void seedLine(At&& at, double gap) {
-  constexpr int kLineSteps = (kSeedSteps + 1) * (kSeedSteps + 2) / 2;  // as many as the grid has
   constexpr int kMaxExtra = 1024;
   constexpr int kMaxDepth = 40;
   struct Span {
@@ -56,6 +57,26 @@ void seedLine(At&& at, double gap) {
       open.push_back({span.s0, mid, span.p0, pm, span.depth + 1});
     }
     previous = p;
+  }
+}
+
+// Golden-section search for a minimum of f over [a, b] (f unimodal there, else some local
+// minimum), to a millionth of the interval.
+template <class F>
+void goldenSection(F&& f, double a, double b) {
+  constexpr double kInvPhi = 0.6180339887498949;
+  double x1 = b - kInvPhi * (b - a), x2 = a + kInvPhi * (b - a);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < 30; ++i) {
+    if (f1 <= f2) {
+      b = x2, x2 = x1, f2 = f1;
+      x1 = b - kInvPhi * (b - a);
+      f1 = f(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2;
+      x2 = a + kInvPhi * (b - a);
+      f2 = f(x2);
+    }
   }
 }
 
@@ -152,14 +173,24 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
           // its tolerance from 17 points, where it lies on the surface; its level now reads 0.16x),
           // and between two of them further points wherever the surface runs more than a 64th of
           // the triangle's size between them (seedLine).
-          seedLine(
-              [&](double s) {
-                double g[3] = {0, 0, 0};
-                g[longest] = 1.0 - s;
-                g[(longest + 1) % 3] = s;
-                return seed(g);
-              },
-              longestSide(positions, v) / 64);
+          double nearestS = 0, nearestSeen = 1e300;
+          const auto along = [&](double s) {
+            double g[3] = {0, 0, 0};
+            g[longest] = 1.0 - s;
+            g[(longest + 1) % 3] = s;
+            const gp_Pnt p = seed(g);
+            if (nearest < nearestSeen) nearestSeen = nearest, nearestS = s;
+            return p;
+          };
+          seedLine(along, longestSide(positions, v) / 64);
+          // Then the line's nearest point by golden sections between the even steps beside the
+          // nearest seed, without derivatives: where the surface collapses onto a point past a
+          // knot, the seed at or past the knot is as near as the one before it, and projections
+          // from there cannot move (no derivative); a fuzzed patch's zero-area triangle along its
+          // seam, lying on the surface, read 4.37x its tolerance so.
+          goldenSection([&](double s) { return along(s).Distance(gp_Pnt(m)); },
+                        std::max(0.0, nearestS - 1.0 / kLineSteps),
+                        std::min(1.0, nearestS + 1.0 / kLineSteps));
         } else {
           for (int i = 0; i <= kSeedSteps; ++i) {
             for (int j = 0; i + j <= kSeedSteps; ++j) {
