@@ -252,6 +252,20 @@ TEST(CollapsedSurface, RepairingFlipsDoNotUndoEachOther) {
   EXPECT_EQ(t->report(0).reason.find("refinement stopped"), std::string::npos) << t->report(0).reason;
 }
 
+// wavy_sheet_rebuilt_after_a_stop.brep (face_fuzz seed 2323, input 161): a sheet fanning from a
+// pole corner whose poles swing 7 across in z, 0.2 in y. At 0.1208% its level 1 stops at the pass
+// bound, and level 2's boundary no longer fits the domain, which is rebuilt. The rebuilt domain was
+// left unrefined (the stop held for the levels after it): levels 2 to 4 showed its bare boundary
+// triangulation, 119 to 230 triangles, 6.87x to 23.5x their tolerances. Now each is within.
+TEST(CollapsedSurface, ADomainRebuiltAfterAStoppedLevelIsRefined) {
+  auto model = test::loadTestData("wavy_sheet_rebuilt_after_a_stop.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.0012077769156757115, 9.1651789120317382));
+  ASSERT_TRUE(t);
+  EXPECT_NE(t->report(0).reason.find("rebuilt at level"), std::string::npos) << t->report(0).reason;
+  test::expectEveryLevelWithinTolerance(*t, 0);
+}
+
 // A plane strip 100 long and 1e-6 wide (area 1e-8 of its extent squared, a hundred times the bar)
 // has area: it is meshed, not reported empty.
 TEST(CollapsedSurface, AStripAMillionthOfItsLengthWideIsMeshed) {
