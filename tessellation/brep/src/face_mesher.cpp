@@ -1194,6 +1194,9 @@ int FaceMesher::repairingFlip(cet::TriangleId t, const FaceMesh& mesh) const {
       return it != pivotFlips_.end() && it->second >= kMaxPivotFlips;
     };
     if (pivoted(a, b) || pivoted(a, c)) continue;  // walking around a fan
+    if (const auto it = vertexPivotFlips_.find(a);
+        it != vertexPivotFlips_.end() && it->second >= kMaxVertexPivotFlips)
+      continue;
     const cet::Point2 pa = cdt_->point(a), pb = cdt_->point(b), pc = cdt_->point(c), pd = cdt_->point(d);
     if (!(cet::orient2d(pa, pb, pd) > 0 && cet::orient2d(pa, pd, pc) > 0)) continue;  // not strictly convex
     // Not across a fold of the parametrisation (corners' normals opposed), where no flat triangle
@@ -1310,7 +1313,8 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   if (settings_.trace) std::fprintf(stderr, "refine to %g (angle %g)\n", level.chordal, level.angleRad);
   buildChords(mesh);  // the boundary is fixed while the interior refines
   if (refineLevel_ != levelIndex)
-    quadFlips_.clear(), pivotFlips_.clear(), failedSplits_.clear(), noFold_.clear();
+    quadFlips_.clear(), pivotFlips_.clear(), vertexPivotFlips_.clear(), failedSplits_.clear(),
+        noFold_.clear();
   int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
   int foldTroubleThisCall = 0;
   // Counted from the level's first call: a cancelled level resumes to the mesh an uninterrupted run makes.
@@ -1587,6 +1591,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       if (!cdt_->flipEdge(t, i)) continue;
       ++quadFlips_[quadKey(b, c, a, d)];
       ++pivotFlips_[pairKey(a, b)], ++pivotFlips_[pairKey(a, c)];
+      ++vertexPivotFlips_[a];
       nextWork_.push_back(t);
       nextWork_.push_back(m.neighbor(t, 1));  // t = (a, b, d), its neighbour (a, d, c) across edge 1
     }

@@ -213,6 +213,11 @@ class FaceMesher {
   // level: 76.9k triangles -> 501k, to the point bound).
   static constexpr int kMaxPivotFlips = 64;
   std::unordered_map<std::uint64_t, int> pivotFlips_;
+  // And at most kMaxVertexPivotFlips this level with one vertex kept (the walk goes on with a new
+  // second corner after each edge's bound: a fuzzed sheet's level walked 4000 flips around one
+  // pole-row vertex, one a pass, to the pass bound).
+  static constexpr int kMaxVertexPivotFlips = 512;
+  std::unordered_map<cet::VertexId, int> vertexPivotFlips_;
   // Triangles (keyed by their vertices) whose split point this level merged with a vertex or was
   // rejected by the triangulation: not asked again. Asked again, such a split marked its corners
   // touched on every pass, so a neighbour waiting for its turn never had it, and the level ended
