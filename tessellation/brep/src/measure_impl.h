@@ -17,6 +17,9 @@ namespace cetview::brep {
 // (Levenberg-Marquardt) down to a local minimum of its distance, and if it still would, again from
 // the surface point nearest to it on a grid over the triangle's (u, v): never under the distance,
 // and over it only where the nearest point lies beyond another local minimum from every start.
+// A triangle without area in (u, v) seeds along its one line instead of a grid, and then searches
+// that line around the nearest seed by golden sections (no derivatives: past a knot where the
+// surface collapses onto a point, projections cannot move).
 // positions xyz and uv per vertex; idx three per triangle.
 // A sample still over `fineAbove` (the tolerance it is judged by) is also taken from a finer grid.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv,
