@@ -50,6 +50,29 @@ brep::MeshParams params(double chordal) {
   return p;
 }
 
+// A stream of `tess` on two threads: on the kept ones when given and free, else on its own.
+std::unique_ptr<ProgressiveStream> startStream(brep::Tessellator& tess, StreamThreads* kept) {
+  StreamOptions o;
+  o.threads = 2;
+  o.kept = kept;
+  return std::make_unique<ProgressiveStream>(tess, tess.lastLevel(), o);
+}
+
+// A tessellator and its stream on the kept threads, held while the test does something else.
+struct HeldStream {
+  std::unique_ptr<brep::Tessellator> tess;
+  std::unique_ptr<ProgressiveStream> stream;  // destroyed first
+};
+HeldStream holdStream(const brep::Model& model, double chordal, StreamThreads& kept) {
+  HeldStream held;
+  held.tess = brep::Tessellator::create(model, params(chordal), kept.pool()).tessellator;
+  EXPECT_TRUE(held.tess);
+  if (!held.tess) return held;
+  held.stream = startStream(*held.tess, &kept);
+  EXPECT_TRUE(held.stream->onKeptThread());
+  return held;
+}
+
 // One stream from a new tessellator to its last level; returns the consumer's faces. The consumer's
 // level records must be this stream's own. `onKept` and `keptRings`, when given, say whether the
 // stream ran its coordinator on the kept thread and wrote into the kept rings.
@@ -59,10 +82,8 @@ std::vector<std::vector<float>> streamToEnd(const brep::Model& model, const brep
   auto created = brep::Tessellator::create(model, p, kept ? kept->pool() : nullptr);
   EXPECT_TRUE(created.tessellator) << created.error;
   brep::Tessellator& tess = *created.tessellator;
-  StreamOptions o;
-  o.threads = 2;
-  o.kept = kept;
-  ProgressiveStream stream(tess, tess.lastLevel(), o);
+  const auto started = startStream(tess, kept);
+  ProgressiveStream& stream = *started;
   if (onKept) *onKept = stream.onKeptThread();
   if (keptRings) *keptRings = kept && &stream.workerRing(0) == &kept->workerRing(0);
   StreamConsumer consumer(stream, model.faces().size());
@@ -105,12 +126,9 @@ TEST(StreamThreads, AStreamAfterOneDroppedUnreadReadsOnlyItsOwnRecords) {
   const auto clean = streamToEnd(*model, params(0.002), nullptr);
   StreamThreads kept(2);
   {
-    auto dropped = brep::Tessellator::create(*model, params(0.01), kept.pool()).tessellator;
-    StreamOptions o;
-    o.threads = 2;
-    o.kept = &kept;
-    ProgressiveStream stream(*dropped, dropped->lastLevel(), o);
-    EXPECT_TRUE(stream.onKeptThread());
+    const HeldStream dropped = holdStream(*model, 0.01, kept);
+    ASSERT_TRUE(dropped.stream);
+    ProgressiveStream& stream = *dropped.stream;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (stream.progress().lastCompleteLevel < 0 && std::chrono::steady_clock::now() < deadline)
       stream.waitForLevel(0, std::chrono::milliseconds(1));
@@ -128,12 +146,8 @@ TEST(StreamThreads, AStreamMadeWhileTheThreadIsTakenStartsItsOwn) {
   StreamThreads kept(2);
   bool onKept = true, keptRings = true;
   {
-    auto heldTess = brep::Tessellator::create(*model, params(0.002), kept.pool()).tessellator;
-    StreamOptions o;
-    o.threads = 2;
-    o.kept = &kept;
-    ProgressiveStream held(*heldTess, heldTess->lastLevel(), o);
-    EXPECT_TRUE(held.onKeptThread());
+    const HeldStream held = holdStream(*model, 0.002, kept);
+    ASSERT_TRUE(held.stream);
     EXPECT_EQ(streamToEnd(*model, params(0.002), &kept, &onKept, &keptRings), clean);
     EXPECT_FALSE(onKept);
     EXPECT_FALSE(keptRings);
