@@ -11,6 +11,13 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
@@ -198,6 +205,79 @@ TEST(Isolation, TheFallbackReturnsAtOnceWhenCancelledAndTakesUpItsJobAgain) {
             FallbackResult::kCancelled);
 }
 
+// A square face whose edge's 3D curve swings 10000 units out (its ends on the square's corners, its
+// pcurve the square's side): BRepMesh builds a face's boundary from the 3D curves, so its mesh
+// would hold triangles out to that swing, and on such a fuzzed face (seed 2626, input 209) its
+// healer, which no cancel reaches, allocated until the process was killed (24 GB). The fallback
+// refuses such a face at once, inline or on its thread, and says which edge and why.
+TEST(Isolation, TheFallbackRefusesAFaceWhoseEdgeCurveLiesFarOffItsSurface) {
+  TopoDS_Face face =
+      BRepBuilderAPI_MakeFace(gp_Pln(), BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0),
+                                                                   gp_Pnt(10, 10, 0), gp_Pnt(0, 10, 0), true)
+                                            .Wire())
+          .Face();
+  const TopoDS_Edge side = TopoDS::Edge(TopExp_Explorer(face, TopAbs_EDGE).Current());
+  double first = 0, last = 0;
+  const Handle(Geom_Curve) line = BRep_Tool::Curve(side, first, last);
+  TColgp_Array1OfPnt poles(1, 3);
+  poles(1) = line->Value(first), poles(2) = gp_Pnt(5, -1e4, 0), poles(3) = line->Value(last);
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = first, knots(2) = last;
+  TColStd_Array1OfInteger multiplicities(1, 2);
+  multiplicities(1) = multiplicities(2) = 3;
+  // The pcurve stays the side (stored: on a plane OCCT would otherwise project the new curve).
+  const gp_Pnt a = line->Value(first), b = line->Value(last);
+  BRep_Builder builder;
+  builder.UpdateEdge(side, new Geom2d_Line(gp_Pnt2d(a.X(), a.Y()), gp_Dir2d(b.X() - a.X(), b.Y() - a.Y())),
+                     face, BRep_Tool::Tolerance(side));
+  builder.UpdateEdge(side, new Geom_BSplineCurve(poles, knots, multiplicities, 2),
+                     BRep_Tool::Tolerance(side));
+  FaceMesh mesh;
+  std::vector<std::uint32_t> indices;
+  std::string failure;
+  EXPECT_EQ(meshFaceWithBRepMesh(face, false, 0.01, 0.3, mesh, indices, failure), FallbackResult::kFailed);
+  EXPECT_NE(failure.find("edge 0's 3D curve spans"), std::string::npos) << failure;
+  EXPECT_NE(failure.find("far beyond its surface"), std::string::npos) << failure;
+  EXPECT_EQ(mesh.vertexCount(), 0u);
+  EXPECT_TRUE(indices.empty());
+  std::atomic<bool> cancel{false};
+  CancellableFallback fallback;
+  failure.clear();
+  EXPECT_EQ(fallback.run(face, false, 0.01, 0.3, mesh, indices, failure, &cancel), FallbackResult::kFailed);
+  EXPECT_NE(failure.find("far beyond its surface"), std::string::npos) << failure;
+}
+
+// A coarse level whose boundary crosses itself shows BRepMesh's mesh; where BRepMesh fails too, that
+// level shows no triangles and says why, and the next level builds the face afresh (a finer boundary
+// need not cross itself: on a fuzzed face, seed 2626 input 209, BRepMesh was refused on level 0).
+// A failed fallback on a coarse level gave up the whole face there. The bow tie crosses itself on
+// every level and BRepMesh fails on it: after level 0 it is repaired, level 0 empty; at the end it is
+// empty, its reason naming the crossing and the failure once.
+TEST(Isolation, ACoarseLevelWithoutAFallbackMeshLeavesTheNextLevelToCet) {
+  const TopoDS_Wire bowTie =
+      BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 10, 0), gp_Pnt(10, 0, 0), gp_Pnt(0, 10, 0), true)
+          .Wire();
+  auto model = test::loadShape(BRepBuilderAPI_MakeFace(gp_Pln(), bowTie).Face(), "bow_tie");
+  ASSERT_TRUE(model);
+  auto t = Tessellator::create(*model, test::relative(0.001)).tessellator;
+  ASSERT_TRUE(t);
+  ASSERT_GT(t->lastLevel(), 0);
+  ASSERT_TRUE(t->run(1, {}, nullptr, 0));
+  const FaceReport level0 = t->report(0);
+  EXPECT_EQ(level0.status, FaceStatus::kRepaired) << level0.reason;
+  EXPECT_NE(level0.reason.find(std::string("level 0") + FaceMesher::kEmptyLevel + "boundary crosses itself"),
+            std::string::npos)
+      << level0.reason;
+  EXPECT_NE(level0.reason.find("fallback failed too"), std::string::npos) << level0.reason;
+  EXPECT_TRUE(t->faceMesh(0).levels.at(0).empty());
+  ASSERT_TRUE(t->run(1));
+  const FaceReport& end = t->report(0);
+  EXPECT_EQ(end.status, FaceStatus::kEmpty) << end.reason;
+  EXPECT_EQ(occurrences(end.reason, "crosses itself"), 1u) << end.reason;
+  EXPECT_EQ(occurrences(end.reason, "fallback failed too"), 1u) << end.reason;
+  expectWellFormed(*t, 0);
+}
+
 // A run of level 0 cancelled while crossing_boundary.brep's face 1 makes its fallback mesh
 // (BRepMesh, from about 15 ms into the run to 100-180 ms) returns without waiting for it: that face
 // has no level yet (it had level 0 when the run waited for BRepMesh). Resumed, the run makes what an
@@ -322,17 +402,21 @@ TEST(Isolation, ABoundaryBuildStopsAtTheFlagAndIsBuiltAgainWhole) {
   EXPECT_GE(stoppedInBuild, 1) << "every build ran to its end before the flag was seen";
 }
 
-// On its last level the same face ends on its fallback mesh (its capped chords cross each other in
-// UV): its reason gives that cause and, after it, the cap that led to it (it gave the cause alone).
+// On its last level the same face falls back (its capped chords cross each other in UV), and BRepMesh
+// is not run on it: its edges' 3D curves span up to 5.5e5 beside a surface 2.9 across, and
+// BRepMesh's mesh of it reached 16 across (spikes out to the curves). Its reason gives the cause,
+// the cap that led to it (it gave the cause alone), and why there is no fallback mesh.
 TEST(Isolation, AFaceThatFallsBackAfterAnEdgeStoppedSaysBoth) {
   auto model = test::loadTestData("edge_far_off_its_face.brep");
   ASSERT_TRUE(model);
   auto tessellated = test::tessellate(*model, test::relative(0.00053658762185832064, 39.178301670862901));
   ASSERT_TRUE(tessellated);
   const FaceReport& r = tessellated->report(0);
-  EXPECT_EQ(r.status, FaceStatus::kFallback) << r.reason;
+  EXPECT_EQ(r.status, FaceStatus::kEmpty) << r.reason;
   EXPECT_NE(r.reason.find("discretisation stopped at"), std::string::npos) << r.reason;
+  EXPECT_NE(r.reason.find("far beyond its surface"), std::string::npos) << r.reason;
   EXPECT_EQ(r.reason.find(FaceMesher::kDeferredLevel), std::string::npos) << r.reason;
+  EXPECT_EQ(r.reason.find(FaceMesher::kEmptyLevel), std::string::npos) << r.reason;
 }
 
 // The default bound grows with the face (256 times its points before the level, at least 250k) up

@@ -1,18 +1,26 @@
 #include "brepmesh_fallback.h"
 
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
+#include <cstdio>
 #include <mutex>
 #include <system_error>
 #include <thread>
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
+#include <BndLib_Add3dCurve.hxx>
+#include <BndLib_AddSurface.hxx>
+#include <Bnd_Box.hxx>
 #include <IMeshTools_Parameters.hxx>
 #include <Message_ProgressIndicator.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include "surface_eval.h"
@@ -81,6 +89,37 @@ TopoDS_Face privateCopy(const TopoDS_Face& face) {
   return TopoDS::Face(copier.Shape());
 }
 
+// An edge whose 3D curve strays far from its face, or "" when none does. BRepMesh discretises each
+// edge's 3D curve and then works its points against the surface; on a fuzzed face whose degree-14
+// edge curve spans a box 1.2e7 across beside a surface 450 across, its model healer (which reads no
+// progress indicator, so no cancel reaches it) allocated without end: 24 GB and the process killed.
+// A valid edge lies within its tolerance of the surface; beyond kStrayFactor times the surface's
+// extent it is not an edge of this face at all, and BRepMesh is not run on it.
+std::string strayingEdge(const TopoDS_Face& face) {
+  constexpr double kStrayFactor = 10;
+  Bnd_Box surfaceBox;
+  BndLib_AddSurface::Add(BRepAdaptor_Surface(face), 0.0, surfaceBox);
+  if (surfaceBox.IsVoid() || surfaceBox.IsOpen()) return "";
+  const double extent = std::sqrt(surfaceBox.SquareExtent());
+  int index = 0;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next(), ++index) {
+    const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+    if (BRep_Tool::Degenerated(edge) || !BRep_Tool::IsGeometric(edge)) continue;
+    Bnd_Box curveBox;
+    BndLib_Add3dCurve::Add(BRepAdaptor_Curve(edge), 0.0, curveBox);
+    if (curveBox.IsVoid()) continue;
+    const double curveExtent = curveBox.IsOpen() ? HUGE_VAL : std::sqrt(curveBox.SquareExtent());
+    if (curveExtent > kStrayFactor * extent + BRep_Tool::Tolerance(edge)) {
+      char line[160];
+      std::snprintf(line, sizeof line,
+                    "edge %d's 3D curve spans %.3g, far beyond its surface (%.3g): not given to BRepMesh",
+                    index, curveExtent, extent);
+      return line;
+    }
+  }
+  return "";
+}
+
 void runBRepMesh(const TopoDS_Face& face, double chordal, double angle, const Message_ProgressRange& range) {
   IMeshTools_Parameters parameters;
   parameters.Deflection = chordal;
@@ -146,6 +185,8 @@ FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reverse
                                     double angle, FaceMesh& mesh, std::vector<std::uint32_t>& indices,
                                     std::string& failure) {
   try {
+    failure = strayingEdge(forwardFace);
+    if (!failure.empty()) return FallbackResult::kFailed;
     const TopoDS_Face face = privateCopy(forwardFace);
     runBRepMesh(face, chordal, angle, Message_ProgressRange());
     return appendTriangulation(face, reversed, mesh, indices, failure);
@@ -176,6 +217,8 @@ FallbackResult CancellableFallback::run(const TopoDS_Face& forwardFace, bool rev
   if (!job_) {
     auto job = std::make_shared<Job>();
     try {
+      failure = strayingEdge(forwardFace);
+      if (!failure.empty()) return FallbackResult::kFailed;
       job->face = privateCopy(forwardFace);
     } catch (const Standard_Failure& e) {
       failure = failureOf(e);

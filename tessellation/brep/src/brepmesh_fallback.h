@@ -18,7 +18,8 @@ namespace cetview::brep {
 enum class FallbackResult { kMeshed, kFailed, kCancelled };
 
 // Appends the vertices to mesh and the triangles (oriented for `reversed`) to indices; kFailed,
-// with the reason, when BRepMesh produces nothing. Runs on the calling thread, to the end.
+// with the reason, when BRepMesh produces nothing or is not run (an edge's 3D curve far off the
+// face's surface: strayingEdge() in the .cpp). Runs on the calling thread, to the end.
 FallbackResult meshFaceWithBRepMesh(const TopoDS_Face& forwardFace, bool reversed, double chordal,
                                     double angle, FaceMesh& mesh, std::vector<std::uint32_t>& indices,
                                     std::string& failure);

@@ -1732,7 +1732,9 @@ std::string FaceMesher::repairsReason(bool withDeferredLevels) const {
     if (std::find(repairs_.begin(), repairs_.begin() + static_cast<std::ptrdiff_t>(i), repairs_[i]) !=
         repairs_.begin() + static_cast<std::ptrdiff_t>(i))
       continue;
-    if (!withDeferredLevels && repairs_[i].find(kDeferredLevel) != std::string::npos) continue;
+    if (!withDeferredLevels && (repairs_[i].find(kDeferredLevel) != std::string::npos ||
+                                repairs_[i].find(kEmptyLevel) != std::string::npos))
+      continue;
     reason += (reason.empty() ? "" : "; ") + repairs_[i];
   }
   return reason;
@@ -1816,7 +1818,7 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
                                   const std::atomic<bool>* cancel) {
   cdt_.reset();
   records_.clear();
-  if (deferredIndices_.empty()) {
+  if (deferredIndices_.empty() && deferredFailure_.empty()) {
     std::string failure;
     const FallbackResult result =
         fallbackJob_.run(topology_.face, settings_.reversed, settings_.finalChordal, settings_.finalAngle,
@@ -1826,12 +1828,14 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
       return FaceStatus::kCancelled;
     }
     pendingDefer_.clear();
-    if (result == FallbackResult::kFailed) {
-      deferredFailure_ = failure;  // useFallback() says so once, without running BRepMesh again
-      return useFallback(why, mesh, report, cancel);
-    }
+    // BRepMesh failed: this level shows nothing and the next starts afresh all the same (a finer
+    // boundary need not cross itself); useFallback() says so without running BRepMesh again.
+    if (result == FallbackResult::kFailed) deferredFailure_ = failure;
   }
-  repairs_.push_back("level " + std::to_string(k) + kDeferredLevel + why);
+  repairs_.push_back("level " + std::to_string(k) +
+                     (deferredFailure_.empty()
+                          ? std::string(kDeferredLevel) + why
+                          : kEmptyLevel + why + " (fallback failed too: " + deferredFailure_ + ")"));
   repaired_ = true;
   mesh.levels.push_back(deferredIndices_);
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));

@@ -75,6 +75,8 @@ class FaceMesher {
 
   // In a face's reason: a coarse level showed the fallback mesh ("level 0 shows the fallback mesh: ...").
   static constexpr const char* kDeferredLevel = " shows the fallback mesh: ";
+  // The same where the fallback failed as well ("level 0 shows no triangles: ...").
+  static constexpr const char* kEmptyLevel = " shows no triangles: ";
 
  private:
   struct Occurrence {
