@@ -49,6 +49,10 @@ constexpr int kMaxSplitsBelowMinSize = 1024;
 // the level's tolerance.
 constexpr double kFoldFloor = 1e-3;
 constexpr int kFoldTrouble = 16;  // see refine()
+// FaceMesher::alongChord: a flipped triangle no wider across a boundary chord's line than this
+// fraction of its longest edge is not split. At a thousandth, the fuzzed zigzag sheet's cascade
+// stopped by the chord and began again beside the slivers it left (119k triangles on level 0).
+constexpr double kAlongChordBand = 1e-2;
 // Points one level's refinement of a face may add: the most of this floor and this many times the
 // points the face had before, up to the ceiling. Over the 62 bench models a level adds at most 127k
 // (terrain's level 0) and 36 times its points before; terrain at 0.001% has 617k points in all.
@@ -434,6 +438,24 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
         problem = "boundary crosses itself in UV (" + s.message + ")";
         return false;
       }
+    }
+  }
+  // Crossings through a vertex (where a segment ended at a point of the loop's other pass, or two
+  // passes share a point): insertSegment() does not report them. Only where one loop's edges meet:
+  // where different loops do (a sliver wire poking out of a face's corner, in a fuzzed input),
+  // markDomain() sorts the regions out, and that face was meshed within its tolerances.
+  std::vector<int> loopOf(cdt_->vertexCount(), -1);
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (const cet::VertexId id : loops[l]) {
+      int& at = loopOf[cdt_->representative(id)];
+      at = at == -1 || at == static_cast<int>(l) ? static_cast<int>(l) : -2;
+    }
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    for (const cet::VertexId id : loops[l]) {
+      const cet::VertexId v = cdt_->representative(id);
+      if (!crossesAt(v, loopOf)) continue;
+      problem = "boundary crosses itself in UV (at vertex " + std::to_string(v) + ")";
+      return false;
     }
   }
   cdt_->markDomain(cet::DomainRule::kLoopOrientation);
@@ -1142,6 +1164,82 @@ bool FaceMesher::huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, co
   return false;
 }
 
+bool FaceMesher::crossesAt(cet::VertexId v, const std::vector<int>& loopOf) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  if (loopOf[v] < 0) return false;
+  int count = 0, first = -1, last = -1;
+  bool alternate = true;
+  int around = 0;  // bounded: a vertex has a finite star
+  for (cet::TriangleId t = m.incident(v), start = t; t != cet::kNoTriangle && around < 4096; ++around) {
+    // The edge leaving v counter-clockwise in t: leaving along its loop, or arriving.
+    const cet::EdgeFlag f = m.flag(t, cet::prev3(m.indexOf(t, v)));
+    if (f == cet::kBothWays) return false;
+    if (f != cet::kUnconstrained) {
+      if (loopOf[m.vertex(t, cet::next3(m.indexOf(t, v)))] != loopOf[v]) return false;  // loops meet
+      const int leaving = f == cet::kAlongLoop ? 1 : 0;
+      if (count++ == 0)
+        first = leaving;
+      else if (leaving == last)
+        alternate = false;
+      last = leaving;
+    }
+    t = m.nextAround(t, v);
+    if (t == start) break;
+  }
+  return count > 2 && (!alternate || first == last);
+}
+
+bool FaceMesher::alongChord(cet::TriangleId t) const {
+  if (chords_.empty()) return false;
+  const cet::CetMesh& m = cdt_->mesh();
+  const cet::Point2 p[3] = {cdt_->point(m.vertex(t, 0)), cdt_->point(m.vertex(t, 1)),
+                            cdt_->point(m.vertex(t, 2))};
+  double longest = 0;
+  for (int i = 0; i < 3; ++i)
+    longest = std::max(longest, std::hypot(p[(i + 1) % 3].x - p[i].x, p[(i + 1) % 3].y - p[i].y));
+  const double cx = (p[0].x + p[1].x + p[2].x) / 3, cy = (p[0].y + p[1].y + p[2].y) / 3;
+  const int gi = static_cast<int>((cx - gridX0_) / gridCellX_),
+            gj = static_cast<int>((cy - gridY0_) / gridCellY_);
+  if (gi < 0 || gj < 0 || gi >= gridNx_ || gj >= gridNy_) return false;
+  const std::size_t cell =
+      static_cast<std::size_t>(gj) * static_cast<std::size_t>(gridNx_) + static_cast<std::size_t>(gi);
+  const double band = kAlongChordBand * longest;
+  // A corner on the boundary elsewhere (the far side of a thin strip) makes no sliver along the chord.
+  const auto onBoundary = [&](cet::VertexId v) {
+    int around = 0;  // bounded: a vertex has a finite star
+    for (cet::TriangleId s = m.incident(v), first = s; s != cet::kNoTriangle && around < 4096; ++around) {
+      const int iv = m.indexOf(s, v);
+      for (int i = 0; i < 3; ++i)
+        if (i != iv && m.isConstrained(s, i)) return true;
+      s = m.nextAround(s, v);
+      if (s == first) break;
+    }
+    return false;
+  };
+  bool boundary[3] = {false, false, false};
+  for (int i = 0; i < 3; ++i) boundary[i] = onBoundary(m.vertex(t, i));
+  for (std::uint32_t at = gridStart_[cell]; at < gridStart_[cell + 1]; ++at) {
+    const Chord& c = chords_[gridChords_[at]];
+    const double ex = c.pb.x - c.pa.x, ey = c.pb.y - c.pa.y, e2 = ex * ex + ey * ey;
+    if (!(e2 > 0)) continue;
+    const double e = std::sqrt(e2);
+    bool along = true;
+    for (int i = 0; i < 3 && along; ++i) {
+      const double dx = p[i].x - c.pa.x, dy = p[i].y - c.pa.y;
+      const double s = (dx * ex + dy * ey) / e2;
+      const bool end = (p[i].x == c.pa.x && p[i].y == c.pa.y) || (p[i].x == c.pb.x && p[i].y == c.pb.y);
+      along = s >= -1e-9 && s <= 1 + 1e-9 && std::abs(dx * ey - dy * ex) / e <= band && (end || !boundary[i]);
+    }
+    if (along) {
+      if (settings_.trace)
+        std::fprintf(stderr, "  triangle %u lies along a chord (length %g): not split\n", t,
+                     c.ab.Magnitude());
+      return true;
+    }
+  }
+  return false;
+}
+
 double FaceMesher::facing(cet::VertexId a, cet::VertexId b, cet::VertexId c, const FaceMesh& mesh) const {
   const cet::VertexId v[3] = {a, b, c};
   gp_Pnt P[3];
@@ -1473,7 +1571,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         // thinner ones), unless flipping an edge puts them right (repairingFlip).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
         if (r->longest > level.chordal) flipEdge = repairingFlip(t, mesh);
-        if (flipEdge < 0 && huggingPoleChord(t, *r, mesh)) continue;
+        if (flipEdge < 0 && (huggingPoleChord(t, *r, mesh) || alongChord(t))) continue;
         if (flipEdge < 0) belowMinSize += r->longest <= minSize;
       }
       if (at < 0) continue;
@@ -1832,10 +1930,18 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
     // boundary need not cross itself); useFallback() says so without running BRepMesh again.
     if (result == FallbackResult::kFailed) deferredFailure_ = failure;
   }
-  repairs_.push_back("level " + std::to_string(k) +
-                     (deferredFailure_.empty()
-                          ? std::string(kDeferredLevel) + why
-                          : kEmptyLevel + why + " (fallback failed too: " + deferredFailure_ + ")"));
+  if (deferredFailure_.empty()) {
+    repairs_.push_back("level " + std::to_string(k) + kDeferredLevel + why);
+  } else if (emptyLast_ >= 0 && emptyLast_ == k - 1 && emptyLine_ < repairs_.size()) {
+    const std::string& line = repairs_[emptyLine_];
+    repairs_[emptyLine_] = "levels " + std::to_string(emptyFirst_) + " to " + std::to_string(k) + " show" +
+                           line.substr(line.find(kEmptyLevel));
+    emptyLast_ = k;
+  } else {
+    emptyLine_ = repairs_.size(), emptyFirst_ = emptyLast_ = k;
+    repairs_.push_back("level " + std::to_string(k) + " shows" + kEmptyLevel + why +
+                       " (fallback failed too: " + deferredFailure_ + ")");
+  }
   repaired_ = true;
   mesh.levels.push_back(deferredIndices_);
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));

@@ -75,8 +75,9 @@ class FaceMesher {
 
   // In a face's reason: a coarse level showed the fallback mesh ("level 0 shows the fallback mesh: ...").
   static constexpr const char* kDeferredLevel = " shows the fallback mesh: ";
-  // The same where the fallback failed as well ("level 0 shows no triangles: ...").
-  static constexpr const char* kEmptyLevel = " shows no triangles: ";
+  // The same where the fallback failed as well ("level 0 shows no triangles: ...", "levels 0 to 4
+  // show no triangles: ...").
+  static constexpr const char* kEmptyLevel = " no triangles: ";
 
  private:
   struct Occurrence {
@@ -132,6 +133,10 @@ class FaceMesher {
   std::vector<std::uint32_t> deferredIndices_;  // the fallback mesh shown by deferred coarse levels
   std::string pendingDefer_;                    // why, when making deferredIndices_ was cancelled
   std::string deferredFailure_;                 // why BRepMesh made no deferredIndices_ (it failed)
+  // Consecutive levels deferred without a fallback mesh share one line of repairs_ ("levels 0 to 4
+  // show no triangles: <the first one's cause>"): its index, and the run's first and last level.
+  std::size_t emptyLine_ = 0;
+  int emptyFirst_ = -1, emptyLast_ = -1;
 
   // Output bookkeeping: vertices the triangulator created since the last sync get their data.
   // Appends the output data of the next triangulator vertex: at (u, v), position p (an edge point)
@@ -250,6 +255,26 @@ class FaceMesher {
   // flipped). refine() does not split such a triangle as flipped, unless an edge flip puts it
   // right (repairingFlip).
   bool huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, const FaceMesh& mesh) const;
+  // Whether t's corners all lie, in scaled UV, within a band along one boundary chord's line (no
+  // corner further from it than kAlongChordBand of t's longest edge, each projecting onto the chord),
+  // each an end of the chord or off the boundary (a thin strip's triangles, their far corners on its
+  // other side, lie in such a band too, and splits put them right: held back, 161 flipped
+  // triangles on nist_ctc_04's coarse levels and 9 on Block's).
+  // Such a sliver follows the boundary curve's bend, not the surface's: its facet faces either way
+  // whatever the surface does, and bisecting a free edge only puts another point in the band, nearer
+  // the line. A fuzzed sheet (a zigzag fanning from a pole, 885-long chord from it) took 24675
+  // points on level 0 so, 25k of them within 1e-8 of that chord's line in UV, one split a pass
+  // to the pass bound, and showed the stopped level's mesh on the finer ones (8.8x). refine() does
+  // not split such a triangle as flipped.
+  bool alongChord(cet::TriangleId t) const;
+  // Whether the boundary crosses itself at triangulator vertex v, of loop loopOf[v] (-1: none, -2:
+  // several; where loops meet, false). Around v its constraint edges
+  // must alternate leaving and arriving (each sector between two of them inside the domain or out);
+  // two leaving (or arriving) in a row is a crossing through v, which insertSegment() does not
+  // report (a segment is inserted up to the first vertex it meets). A fuzzed star-shaped wire
+  // (seed 2727 input 74), its straight pcurves crossing, was found to cross on levels 0 to 4; on
+  // level 5 its edge points met at the crossings, and the face was meshed, 1.06x its tolerance.
+  bool crossesAt(cet::VertexId v, const std::vector<int>& loopOf) const;
   // Whether t, its corners in line through a pole (TriangleRecord::kInLine), stands on a boundary
   // chord with an end at a pole or apex. Bisecting such a triangle only makes another on the same
   // chord with its apex nearer to it, in line again: no split puts it right (a fuzzed fan onto a
