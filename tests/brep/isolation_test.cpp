@@ -173,27 +173,6 @@ TEST(Isolation, AFaceReasonNamesEachRepairAndFailureOnce) {
       << c->report(1).reason;
 }
 
-// A figure eight whose wire passes twice through one vertex, crossing itself there (lobes of
-// different areas, so the wire encloses some): insertSegment() meets no crossing (each segment
-// ends at that vertex), but around it the boundary leaves twice in a row. Taken for a boundary, it
-// was meshed as if it bounded something. (A fuzzed star whose edge points met at its crossings on
-// a fine level, seed 2727 input 74, was meshed there 1.06x its tolerance.)
-TEST(Isolation, AWireCrossingItselfAtAVertexIsNotMeshedAsABoundary) {
-  BRepBuilderAPI_MakePolygon eight;
-  for (const gp_Pnt& p : {gp_Pnt(0, 0, 0), gp_Pnt(5, 5, 0), gp_Pnt(12, 12, 0), gp_Pnt(12, 0, 0),
-                          gp_Pnt(5, 5, 0), gp_Pnt(0, 10, 0)})
-    eight.Add(p);
-  eight.Close();
-  ASSERT_TRUE(eight.IsDone());
-  auto model = test::loadShape(BRepBuilderAPI_MakeFace(gp_Pln(), eight.Wire()).Face(), "figure_eight");
-  ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.001));
-  ASSERT_TRUE(t);
-  const FaceReport& r = t->report(0);
-  EXPECT_TRUE(r.status == FaceStatus::kFallback || r.status == FaceStatus::kEmpty) << r.reason;
-  EXPECT_NE(r.reason.find("boundary crosses itself in UV (at vertex"), std::string::npos) << r.reason;
-}
-
 // The cancellable fallback: with the flag raised it returns at once and appends nothing; BRepMesh
 // goes on on its own thread, and the next call takes up the same job. Without a flag it runs inline.
 TEST(Isolation, TheFallbackReturnsAtOnceWhenCancelledAndTakesUpItsJobAgain) {

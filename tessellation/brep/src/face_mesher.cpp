@@ -440,24 +440,6 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       }
     }
   }
-  // Crossings through a vertex (where a segment ended at a point of the loop's other pass, or two
-  // passes share a point): insertSegment() does not report them. Only where one loop's edges meet:
-  // where different loops do (a sliver wire poking out of a face's corner, in a fuzzed input),
-  // markDomain() sorts the regions out, and that face was meshed within its tolerances.
-  std::vector<int> loopOf(cdt_->vertexCount(), -1);
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    for (const cet::VertexId id : loops[l]) {
-      int& at = loopOf[cdt_->representative(id)];
-      at = at == -1 || at == static_cast<int>(l) ? static_cast<int>(l) : -2;
-    }
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    for (const cet::VertexId id : loops[l]) {
-      const cet::VertexId v = cdt_->representative(id);
-      if (!crossesAt(v, loopOf)) continue;
-      problem = "boundary crosses itself in UV (at vertex " + std::to_string(v) + ")";
-      return false;
-    }
-  }
   cdt_->markDomain(cet::DomainRule::kLoopOrientation);
   if (cdt_->insideTriangleCount() == 0) {
     problem = "no triangle inside the boundary";
@@ -1162,31 +1144,6 @@ bool FaceMesher::huggingPoleChord(cet::TriangleId t, const TriangleRecord& r, co
     }
   }
   return false;
-}
-
-bool FaceMesher::crossesAt(cet::VertexId v, const std::vector<int>& loopOf) const {
-  const cet::CetMesh& m = cdt_->mesh();
-  if (loopOf[v] < 0) return false;
-  int count = 0, first = -1, last = -1;
-  bool alternate = true;
-  int around = 0;  // bounded: a vertex has a finite star
-  for (cet::TriangleId t = m.incident(v), start = t; t != cet::kNoTriangle && around < 4096; ++around) {
-    // The edge leaving v counter-clockwise in t: leaving along its loop, or arriving.
-    const cet::EdgeFlag f = m.flag(t, cet::prev3(m.indexOf(t, v)));
-    if (f == cet::kBothWays) return false;
-    if (f != cet::kUnconstrained) {
-      if (loopOf[m.vertex(t, cet::next3(m.indexOf(t, v)))] != loopOf[v]) return false;  // loops meet
-      const int leaving = f == cet::kAlongLoop ? 1 : 0;
-      if (count++ == 0)
-        first = leaving;
-      else if (leaving == last)
-        alternate = false;
-      last = leaving;
-    }
-    t = m.nextAround(t, v);
-    if (t == start) break;
-  }
-  return count > 2 && (!alternate || first == last);
 }
 
 bool FaceMesher::alongChord(cet::TriangleId t) const {

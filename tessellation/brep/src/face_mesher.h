@@ -267,14 +267,6 @@ class FaceMesher {
   // to the pass bound, and showed the stopped level's mesh on the finer ones (8.8x). refine() does
   // not split such a triangle as flipped.
   bool alongChord(cet::TriangleId t) const;
-  // Whether the boundary crosses itself at triangulator vertex v, of loop loopOf[v] (-1: none, -2:
-  // several; where loops meet, false). Around v its constraint edges
-  // must alternate leaving and arriving (each sector between two of them inside the domain or out);
-  // two leaving (or arriving) in a row is a crossing through v, which insertSegment() does not
-  // report (a segment is inserted up to the first vertex it meets). A fuzzed star-shaped wire
-  // (seed 2727 input 74), its straight pcurves crossing, was found to cross on levels 0 to 4; on
-  // level 5 its edge points met at the crossings, and the face was meshed, 1.06x its tolerance.
-  bool crossesAt(cet::VertexId v, const std::vector<int>& loopOf) const;
   // Whether t, its corners in line through a pole (TriangleRecord::kInLine), stands on a boundary
   // chord with an end at a pole or apex. Bisecting such a triangle only makes another on the same
   // chord with its apex nearer to it, in line again: no split puts it right (a fuzzed fan onto a
