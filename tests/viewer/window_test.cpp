@@ -351,7 +351,10 @@ TEST_F(ViewerWindowTest, BadFaceIsReportedAndTheRestShows) {
           "/self_intersecting_wire.brep --size 960x600 --validate --frames 3000 --script " + script,
       "badface.png", log, rc);
   ASSERT_EQ(rc, 0) << log;
-  EXPECT_NE(log.find("cetview view: face 7: empty: boundary crosses itself in UV"), std::string::npos) << log;
+  // The window's target level is a coarse one: the face's reason there says which levels show no
+  // triangles and why.
+  EXPECT_NE(log.find("cetview view: face 7: empty: "), std::string::npos) << log;
+  EXPECT_NE(log.find("boundary crosses itself in UV"), std::string::npos) << log;
   expectWholeLevelShown(log);
   ASSERT_TRUE(image.ok()) << image.error().message;
   EXPECT_GT(modelCoverage(*image), 0.05);

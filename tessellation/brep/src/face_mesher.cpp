@@ -1902,7 +1902,8 @@ FaceStatus FaceMesher::deferLevel(int k, std::string why, FaceMesh& mesh, FaceRe
   repaired_ = true;
   mesh.levels.push_back(deferredIndices_);
   mesh.levelVertexEnd.push_back(static_cast<std::uint32_t>(mesh.vertexCount()));
-  report.status = FaceStatus::kRepaired;
+  // No triangles on this level: empty for now (a later level CET meshes says repaired).
+  report.status = deferredFailure_.empty() ? FaceStatus::kRepaired : FaceStatus::kEmpty;
   report.reason = repairsReason();
   return report.status;
 }
