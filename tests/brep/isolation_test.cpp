@@ -147,16 +147,21 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
   return n;
 }
 
+// A plane face whose one wire crosses itself at the centre.
+std::unique_ptr<Model> bowTie() {
+  const TopoDS_Wire wire =
+      BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 10, 0), gp_Pnt(10, 0, 0), gp_Pnt(0, 10, 0), true)
+          .Wire();
+  return test::loadShape(BRepBuilderAPI_MakeFace(gp_Pln(), wire).Face(), "bow_tie");
+}
+
 // A face's reason names each repair and failure once. A bow tie (its one wire crosses itself at
 // the centre) fails in CET on every level and in BRepMesh too: its reason said "fallback failed
 // too" twice (BRepMesh ran again for the final level after failing for the coarse ones).
 // crossing_boundary.brep's face 1, rebuilt on every level, said "inner wire ran counter-clockwise
 // in UV; reversed" 24 times.
 TEST(Isolation, AFaceReasonNamesEachRepairAndFailureOnce) {
-  const TopoDS_Wire bowTie =
-      BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 10, 0), gp_Pnt(10, 0, 0), gp_Pnt(0, 10, 0), true)
-          .Wire();
-  auto model = test::loadShape(BRepBuilderAPI_MakeFace(gp_Pln(), bowTie).Face(), "bow_tie");
+  auto model = bowTie();
   ASSERT_TRUE(model);
   auto t = test::tessellate(*model, test::relative(0.001));
   ASSERT_TRUE(t);
@@ -254,10 +259,7 @@ TEST(Isolation, TheFallbackRefusesAFaceWhoseEdgeCurveLiesFarOffItsSurface) {
 // every level and BRepMesh fails on it: after level 0 it is empty for now, its reason saying why;
 // at the end it is empty, its reason naming the crossing and the failure once.
 TEST(Isolation, ACoarseLevelWithoutAFallbackMeshLeavesTheNextLevelToCet) {
-  const TopoDS_Wire bowTie =
-      BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(10, 10, 0), gp_Pnt(10, 0, 0), gp_Pnt(0, 10, 0), true)
-          .Wire();
-  auto model = test::loadShape(BRepBuilderAPI_MakeFace(gp_Pln(), bowTie).Face(), "bow_tie");
+  auto model = bowTie();
   ASSERT_TRUE(model);
   auto t = Tessellator::create(*model, test::relative(0.001)).tessellator;
   ASSERT_TRUE(t);
