@@ -91,7 +91,7 @@ TopoDS_Face privateCopy(const TopoDS_Face& face) {
 
 // An edge whose 3D curve strays far from its face, or "" when none does. BRepMesh discretises each
 // edge's 3D curve and then works its points against the surface; on a fuzzed face whose degree-14
-// edge curve spans a box 1.2e7 across beside a surface 450 across, its model healer (which reads no
+// edge curve spans a box 1.2e7 across beside a surface 458 across, its model healer (which reads no
 // progress indicator, so no cancel reaches it) allocated without end: 24 GB and the process killed.
 // A valid edge lies within its tolerance of the surface; beyond kStrayFactor times the surface's
 // extent it is not an edge of this face at all, and BRepMesh is not run on it.
