@@ -1,7 +1,9 @@
 // Surfaces without area over part or all of a face, as face_fuzz wrote them (tests/brep/data).
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <ostream>
+#include <string>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Geom_Plane.hxx>
@@ -15,6 +17,24 @@
 
 namespace cetview::brep {
 namespace {
+
+// A tests/brep/data model tessellated with `params`; a test failure where it does not load or
+// tessellate, or where face 0's refinement stopped at a work bound (its reason says so).
+struct Tessellated {
+  std::unique_ptr<Model> model;
+  std::unique_ptr<Tessellator> t;
+};
+Tessellated tessellateWithoutAStop(const std::string& file, const MeshParams& params) {
+  Tessellated r;
+  r.model = test::loadTestData(file);
+  EXPECT_TRUE(r.model) << file;
+  if (r.model) r.t = test::tessellate(*r.model, params);
+  EXPECT_TRUE(r.t) << file;
+  if (r.t) {
+    EXPECT_EQ(r.t->report(0).reason.find("refinement stopped"), std::string::npos) << r.t->report(0).reason;
+  }
+  return r;
+}
 
 // collapsed_half.brep is a B-spline whose poles over the last half of its u span all lie on one
 // point. Its triangles there have no area and corners without a first-derivative normal: no
@@ -245,11 +265,7 @@ TEST(CollapsedSurface, ATriangleWhoseAngleSplitIsDroppedIsStillHeldToTheToleranc
 }
 
 TEST(CollapsedSurface, RepairingFlipsDoNotUndoEachOther) {
-  auto model = test::loadTestData("half_collapsed_wavy_sheet.brep");
-  ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.03, 5.0453192950331882));
-  ASSERT_TRUE(t);
-  EXPECT_EQ(t->report(0).reason.find("refinement stopped"), std::string::npos) << t->report(0).reason;
+  tessellateWithoutAStop("half_collapsed_wavy_sheet.brep", test::relative(0.03, 5.0453192950331882));
 }
 
 // wavy_sheet_rebuilt_after_a_stop.brep (face_fuzz seed 2323, input 161): a sheet fanning from a
@@ -258,12 +274,10 @@ TEST(CollapsedSurface, RepairingFlipsDoNotUndoEachOther) {
 // new second corner each time one edge reached its bound), to the pass bound: "refinement stopped
 // on level 1 after 4096 passes". A vertex now keeps at most kMaxVertexPivotFlips a level.
 TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAVertexToThePassBound) {
-  auto model = test::loadTestData("wavy_sheet_rebuilt_after_a_stop.brep");
-  ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.0012077769156757115, 9.1651789120317382));
-  ASSERT_TRUE(t);
-  EXPECT_EQ(t->report(0).reason.find("refinement stopped"), std::string::npos) << t->report(0).reason;
-  test::expectEveryLevelWithinTolerance(*t, 0);
+  const Tessellated r = tessellateWithoutAStop("wavy_sheet_rebuilt_after_a_stop.brep",
+                                               test::relative(0.0012077769156757115, 9.1651789120317382));
+  ASSERT_TRUE(r.t);
+  test::expectEveryLevelWithinTolerance(*r.t, 0);
 }
 
 // A domain rebuilt after a stopped level is refined again. In the fuzzer's run of the same face
@@ -309,12 +323,10 @@ TEST(CollapsedSurface, AStripAMillionthOfItsLengthWideIsMeshed) {
 // them within 1e-8 of the line in UV). The finer levels then kept level 0's interior: 1.1x to
 // 8.8x their tolerances, 10074 of 49472 triangles flipped. Slivers along a chord are not split.
 TEST(CollapsedSurface, SliversAlongABoundaryChordAreNotSplitTowardsIt) {
-  auto model = test::loadTestData("zigzag_sheet_from_a_pole.brep");
-  ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.00067620056944267037, 45.724422064545664));
-  ASSERT_TRUE(t);
-  EXPECT_EQ(t->report(0).reason.find("refinement stopped"), std::string::npos) << t->report(0).reason;
-  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  const Tessellated r = tessellateWithoutAStop("zigzag_sheet_from_a_pole.brep",
+                                               test::relative(0.00067620056944267037, 45.724422064545664));
+  ASSERT_TRUE(r.t);
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*r.t, 0);
   ASSERT_FALSE(levels.empty());
   EXPECT_LE(levels.back().triangles, 10000u) << "49472 with the splits along the chord";
   EXPECT_LE(levels.back().flipped, levels.back().triangles / 100) << "10074 with the splits along the chord";
