@@ -416,19 +416,6 @@ TEST(HardCases, RevolutionTouchingItsAxis) {
   checkAtSeveralDeflections(BRepPrimAPI_MakeRevol(profile, gp_Ax1(gp_Pnt(0, 0, 0), gp::DZ()), 2 * M_PI).Shape(), "egg");
 }
 
-// A face of `surface` bounded by the UV polygon `corners` (straight pcurves, 3D curves built).
-TopoDS_Face uvPolygonFace(const Handle(Geom_Surface)& surface, const std::vector<gp_Pnt2d>& corners) {
-  BRepBuilderAPI_MakeWire wire;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    const gp_Pnt2d a = corners[i], b = corners[(i + 1) % corners.size()];
-    Handle(Geom2d_Line) line = new Geom2d_Line(a, gp_Dir2d(gp_Vec2d(a, b)));
-    wire.Add(BRepBuilderAPI_MakeEdge(line, surface, 0, a.Distance(b)).Edge());
-  }
-  TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, wire.Wire(), Standard_True).Face();
-  BRepLib::BuildCurves3d(face);
-  return face;
-}
-
 // Long thin strips of analytic surfaces, as chair tubes and fillets along long edges are, with ends
 // cut at a slant: their triangles run the length of the direction that bends slowly (straight, on
 // a cylinder), rather than fanning from end to end and filling the strip with points. With the UV
@@ -443,13 +430,14 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
       // r = 0.5, 50 long: 90 degrees in 8 steps at each end (halved from 2 until under 20 degrees);
       // two triangles per step, and 2 to spare where the slanted ends' steps do not line up.
       {"quarter_cylinder",
-       uvPolygonFace(new Geom_CylindricalSurface(gp_Ax3(), 0.5), {{0, 0}, {M_PI / 2, 0.3}, {M_PI / 2, 49.5}, {0, 50}}),
+       test::uvPolygonFace(new Geom_CylindricalSurface(gp_Ax3(), 0.5),
+                           {{0, 0}, {M_PI / 2, 0.3}, {M_PI / 2, 49.5}, {0, 50}}),
        2 * 8 + 2},
       // R = 200, r = 0.5, 40 long: round the tube as the cylinder, along it the sag allows steps
       // of ~3.7 (21:1).
       {"torus_fillet",
-       uvPolygonFace(new Geom_ToroidalSurface(gp_Ax3(), 200, 0.5),
-                     {{0, 0}, {0.2, 0.2}, {0.2, M_PI / 2}, {0, M_PI / 2 - 0.3}}),
+       test::uvPolygonFace(new Geom_ToroidalSurface(gp_Ax3(), 200, 0.5),
+                           {{0, 0}, {0.2, 0.2}, {0.2, M_PI / 2}, {0, M_PI / 2 - 0.3}}),
        200},
   };
   for (const Strip& strip : strips) {

@@ -7,6 +7,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepLib.hxx>
+#include <Geom2d_Line.hxx>
+
 #include "brep/measure.h"
 #include "brep/mesh_check.h"
 #include "shape_file.h"
@@ -22,6 +28,18 @@ std::unique_ptr<Model> loadDemo() {
   LoadResult r = loadModel("demo");
   EXPECT_TRUE(r) << r.error;
   return std::move(r.model);
+}
+
+TopoDS_Face uvPolygonFace(const Handle(Geom_Surface) & surface, const std::vector<gp_Pnt2d>& corners) {
+  BRepBuilderAPI_MakeWire wire;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const gp_Pnt2d a = corners[i], b = corners[(i + 1) % corners.size()];
+    Handle(Geom2d_Line) line = new Geom2d_Line(a, gp_Dir2d(gp_Vec2d(a, b)));
+    wire.Add(BRepBuilderAPI_MakeEdge(line, surface, 0, a.Distance(b)).Edge());
+  }
+  TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, wire.Wire(), Standard_True).Face();
+  BRepLib::BuildCurves3d(face);
+  return face;
 }
 
 std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name) {

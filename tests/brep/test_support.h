@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <Geom_Surface.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include "brep/measure.h"
 #include "brep/model.h"
@@ -17,6 +20,8 @@ namespace cetview::brep::test {
 std::string tempPath(const std::string& name);
 // The built-in demo part; fails the test on a load error.
 std::unique_ptr<Model> loadDemo();
+// A face of `surface` bounded by the UV polygon `corners` (straight pcurves, 3D curves built).
+TopoDS_Face uvPolygonFace(const Handle(Geom_Surface) & surface, const std::vector<gp_Pnt2d>& corners);
 // Writes shape to a temporary .brep and loads it; fails the test on a load error.
 std::unique_ptr<Model> loadShape(const TopoDS_Shape& shape, const std::string& name);
 

@@ -186,13 +186,19 @@ std::uint32_t FaceMesher::shownVertex(cet::VertexId v, const gp_Vec& side) const
     if (it != twins->end() && gp_Vec(it->second.other).Dot(side) > gp_Vec(normal_[v]).Dot(side))
       return it->second.twin;
   }
+  if (!creaseCorners_.empty()) {
+    const auto it = creaseCorners_.find(v);
+    if (it != creaseCorners_.end() && it->second.twin != kNoTwin &&
+        gp_Vec(it->second.other).Dot(side) > gp_Vec(it->second.shown).Dot(side))
+      return it->second.twin;
+  }
   return out(v);
 }
 
 gp_Vec FaceMesher::triangleSide(const cet::VertexId v[3], const gp_Pnt P[3]) const {
   gp_Vec side(0, 0, 0);
   for (int i = 0; i < 3; ++i)
-    if (!singular_[v[i]] && !isFold(v[i])) side += gp_Vec(normal_[v[i]]);
+    if (!singular_[v[i]] && !isFold(v[i]) && !isCreaseCorner(v[i])) side += gp_Vec(normal_[v[i]]);
   if (side.Magnitude() >= 0.5) return side;
   return gp_Vec(P[0], P[1]).Crossed(gp_Vec(P[0], P[2]));
 }
@@ -1732,6 +1738,64 @@ void FaceMesher::twinSingularCorners(FaceMesh& mesh) {
   }
 }
 
+void FaceMesher::showCreaseCorners(FaceMesh& mesh) {
+  if (!eval_.hasCreases()) return;
+  const cet::CetMesh& m = cdt_->mesh();
+  const auto triangles = static_cast<cet::TriangleId>(m.triangleCount());
+  const std::uint32_t published = mesh.levelVertexEnd.empty() ? 0 : mesh.levelVertexEnd.back();
+  const double sign = settings_.reversed ? -1.0 : 1.0;
+  for (cet::TriangleId t = 0; t < triangles; ++t) {
+    if (m.isGhost(t) || m.isOutside(t)) continue;
+    const cet::VertexId v[3] = {m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2)};
+    double u[3], w[3], cu = 0, cw = 0;
+    bool on[3], any = false;
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t o = out(v[i]);
+      u[i] = mesh.uv[2 * o], w[i] = mesh.uv[2 * o + 1];
+      cu += u[i] / 3, cw += w[i] / 3;
+      on[i] = !singular_[v[i]] && !isFold(v[i]) && eval_.onCrease(u[i], w[i]);
+      any = any || on[i];
+    }
+    if (!any) continue;
+    // Across a crease (a corner off the creases with one between it and the centroid): no one side.
+    bool across = false;
+    for (int i = 0; i < 3; ++i) across = across || (!on[i] && eval_.crossesCrease(u[i], w[i], cu, cw));
+    if (across) continue;
+    for (int i = 0; i < 3; ++i) {
+      if (!on[i]) continue;
+      const auto it = creaseCorners_.find(v[i]);
+      if (it != creaseCorners_.end() && it->second.twin != kNoTwin) continue;  // both sides shown
+      // The normal just inside the triangle: the first point on the way to its centroid that is off
+      // the crease with no crease between it and the centroid.
+      gp_Dir n;
+      bool found = false;
+      for (int k = SurfaceEval::kFoldBisections; k >= SurfaceEval::kFoldReach && !found; --k) {
+        const double e = std::ldexp(1.0, -k);
+        const double pu = u[i] + e * (cu - u[i]), pw = w[i] + e * (cw - w[i]);
+        if (eval_.onCrease(pu, pw) || eval_.crossesCrease(pu, pw, cu, cw)) continue;
+        gp_Pnt p;
+        found = eval_.pointNormal(pu, pw, p, n);
+        break;
+      }
+      if (!found) continue;
+      const std::uint32_t o = out(v[i]);
+      if (it == creaseCorners_.end()) {
+        if (n.Angle(normal_[v[i]]) <= SurfaceEval::kSettledRad) {
+          creaseCorners_[v[i]] = CreaseCorner{normal_[v[i]], kNoTwin, normal_[v[i]]};
+        } else if (o >= published) {  // not sent with an earlier level: it shows this side's normal
+          for (int c = 0; c < 3; ++c) mesh.normals[3 * o + c] = static_cast<float>(sign * n.Coord(c + 1));
+          creaseCorners_[v[i]] = CreaseCorner{n, kNoTwin, n};
+        } else {
+          creaseCorners_[v[i]] = CreaseCorner{normal_[v[i]], appendTwin(mesh, v[i], n), n};
+        }
+      } else if (n.Angle(it->second.shown) > SurfaceEval::kSettledRad) {
+        it->second.twin = appendTwin(mesh, v[i], n);
+        it->second.other = n;
+      }
+    }
+  }
+}
+
 std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
   const cet::CetMesh& m = cdt_->mesh();
   std::vector<std::uint32_t> indices;
@@ -1748,9 +1812,10 @@ std::vector<std::uint32_t> FaceMesher::snapshot(const FaceMesh& mesh) const {
     const cet::VertexId v[3] = {m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2)};
     std::uint32_t a = out(v[0]), b = out(v[1]), c = out(v[2]);
     const auto twinned = [this](cet::VertexId x) {
-      return isFold(x) || (!singularTwins_.empty() && singularTwins_.count(x));
+      return isFold(x) || (!singularTwins_.empty() && singularTwins_.count(x)) || isCreaseCorner(x);
     };
-    if ((!folds_.empty() || !singularTwins_.empty()) && (twinned(v[0]) || twinned(v[1]) || twinned(v[2]))) {
+    if ((!folds_.empty() || !singularTwins_.empty() || !creaseCorners_.empty()) &&
+        (twinned(v[0]) || twinned(v[1]) || twinned(v[2]))) {
       const gp_Pnt P[3] = {position(mesh, v[0]), position(mesh, v[1]), position(mesh, v[2])};
       const gp_Vec side = triangleSide(v, P);
       a = shownVertex(v[0], side), b = shownVertex(v[1], side), c = shownVertex(v[2], side);
@@ -1801,6 +1866,7 @@ void FaceMesher::clearVertexData() {
   offset_.clear();
   folds_.clear();
   singularTwins_.clear();
+  creaseCorners_.clear();
   outShift_.clear();
   points_.clear();
   occurrences_.clear();
@@ -1956,6 +2022,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
                        cancel);
   }
   twinSingularCorners(mesh);
+  showCreaseCorners(mesh);
   std::vector<std::uint32_t> indices = snapshot(mesh);
   if (indices.empty()) return useFallback("no triangle inside the boundary", mesh, report, cancel);
   if (!strayReported_) {

@@ -339,7 +339,7 @@ class FaceMesher {
   const gp_Dir& sideNormal(cet::VertexId v, const gp_Vec& side) const;
   // The output vertex that corner v of a triangle whose surface normal is `side` shows.
   std::uint32_t shownVertex(cet::VertexId v, const gp_Vec& side) const;
-  // The side whose normals a triangle's fold corners show: its other corners' mean normal where
+  // The side whose normals a triangle's fold and crease corners show: its other corners' mean normal where
   // they agree (|sum| of at least half a unit), else the facet's normal (in the surface's natural
   // orientation).
   gp_Vec triangleSide(const cet::VertexId v[3], const gp_Pnt P[3]) const;
@@ -366,6 +366,27 @@ class FaceMesher {
   // singular boundary points cascaded: 369 -> 42419 triangles). Run before each snapshot.
   void twinSingularCorners(FaceMesh& mesh);
   std::unordered_map<cet::VertexId, FoldVertex> singularTwins_;
+  // Vertices on a crease line (SurfaceEval::onCrease: a C0 knot, a seam where the surface is C0, a
+  // fold of a periodic degree-1 surface): their normal is the limit from the knot span OpenCASCADE
+  // evaluates, not necessarily from the side of the triangles that use them (a face bounded by a
+  // crease showed the far side's normal all along that side: 1532 of a fuzzed face's 1623 triangles
+  // faced against their corners' normals). For each triangle on one side of the creases through its
+  // corners, the normal just inside it (on the way to its centroid, off the crease) is the one its
+  // crease corners show: the vertex's own output normal where the vertex is new on this level and
+  // no triangle has shown it yet, else a twin (a crease through the face: the triangles on each
+  // side show their own). For the output alone, as singularTwins_ (the refinement leaves edges from
+  // a crease to the chordal test). Run before each snapshot.
+  void showCreaseCorners(FaceMesh& mesh);
+  struct CreaseCorner {
+    gp_Dir shown;  // the normal out(v) shows
+    std::uint32_t twin = kNoTwin;
+    gp_Dir other;  // the twin's
+  };
+  static constexpr std::uint32_t kNoTwin = ~std::uint32_t{0};
+  std::unordered_map<cet::VertexId, CreaseCorner> creaseCorners_;
+  bool isCreaseCorner(cet::VertexId v) const {
+    return !creaseCorners_.empty() && creaseCorners_.count(v) != 0;
+  }
   // Where triangle t's free edge between regular corners crosses a fold (SurfaceEval::findFold; the
   // longest such edge): the fold point's (u, v) and the normals either side. False where none does.
   bool foldPoint(cet::TriangleId t, const FaceMesh& mesh, double angleRad, double& u, double& v,

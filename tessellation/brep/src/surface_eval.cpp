@@ -452,6 +452,14 @@ bool SurfaceEval::crosses(const std::vector<double>& creases, double period, dou
   return false;
 }
 
+bool SurfaceEval::near(const std::vector<double>& creases, double period, double x, double band) {
+  if (creases.empty()) return false;
+  if (period > 0) x -= std::floor((x - creases.front()) / period) * period;  // into the crease list's period
+  const auto it = std::lower_bound(creases.begin(), creases.end(), x - band);
+  if (it != creases.end() && *it <= x + band) return true;
+  return period > 0 && x + band >= creases.front() + period;  // the next period's first crease
+}
+
 bool SurfaceEval::sharpKnotBetween(bool uDir, double a, double b, double near, double& knot) const {
   const std::vector<double>& knots = uDir ? uSharpKnots_ : vSharpKnots_;
   bool found = false;

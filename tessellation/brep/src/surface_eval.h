@@ -121,6 +121,14 @@ class SurfaceEval {
   bool crossesCrease(double ua, double va, double ub, double vb) const {
     return crosses(uCreases_, uPeriod_, ua, ub) || crosses(vCreases_, vPeriod_, va, vb);
   }
+  // True when (u, v) lies on a crease line (within 1e-9 of the face's parameter box across it). The
+  // normal there is a limit from one side, the one of the knot span OpenCASCADE evaluates, which
+  // need not be the side the face's triangles lie on (FaceMesher::showCreaseCorners).
+  bool onCrease(double u, double v) const {
+    return near(uCreases_, uPeriod_, u, 1e-9 * (uMax - uMin)) ||
+           near(vCreases_, vPeriod_, v, 1e-9 * (vMax - vMin));
+  }
+  bool hasCreases() const { return !uCreases_.empty() || !vCreases_.empty(); }
   // A sharp knot (findSharpKnots: a crease where the surface is smooth but turns within a band
   // narrower than any split) strictly between a and b (in u when uDir, else v; a < b), the one
   // nearest `near`; false when there is none.
@@ -195,6 +203,7 @@ class SurfaceEval {
                      double settle = 1e-3, double enough = 0) const;
 
   static bool crosses(const std::vector<double>& creases, double period, double a, double b);
+  static bool near(const std::vector<double>& creases, double period, double x, double band);
 
   // The iso-lines of the face's degenerate edges (one 3D point each). A B-spline's degenerate row is
   // often not collapsed exactly: its points lie a micron apart, its first derivatives are small but

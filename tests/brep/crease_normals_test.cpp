@@ -1,0 +1,98 @@
+// Vertex normals on a crease of the surface (a C0 knot of a B-spline): each triangle's corners show
+// the exact normal of the triangle's own side of the crease (FaceMesher::showCreaseCorners).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <BRepAdaptor_Surface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+#include "brep/tessellator.h"
+#include "measure_impl.h"
+#include "test_support.h"
+
+namespace cetview::brep {
+namespace {
+
+// A bilinear sheet 10 x 10 in z = 0 on its first knot span (u in [0, 1]), bent at the knot u = 1
+// (of multiplicity 1: C0 there) into a second span that rises to `farRow` at u = 2.
+Handle(Geom_BSplineSurface) bentSheet(const gp_Pnt& farRow) {
+  const gp_Pnt rows[3] = {gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), farRow};
+  TColgp_Array2OfPnt poles(1, 3, 1, 2);
+  for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+    for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j)
+      poles.SetValue(i, j, rows[i - 1].Translated(gp_Vec(0, 10.0 * (j - 1), 0)));
+  TColStd_Array1OfReal uKnots(1, 3), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, 3), vMults(1, 2);
+  for (int k = 1; k <= 3; ++k) uKnots(k) = k - 1, uMults(k) = k == 2 ? 1 : 2;
+  vKnots(1) = 0, vKnots(2) = 1, vMults(1) = vMults(2) = 2;
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 1, 1);
+}
+
+// Every corner of every triangle on every level against the exact normal a step (1e-6 of the way
+// to the centroid) inside the triangle, in the face's orientation, and the triangle faces its
+// corners' way; triangles across the crease (corners on both sides of u = 1) have no one side and
+// are left out. Returns how many corners were checked.
+int expectCornersShowTheirSidesNormal(const Tessellator& t, const Handle(Geom_Surface)& surface) {
+  int checked = 0;
+  const FaceMesh& m = t.faceMesh(0);
+  const double sign = t.model().faces()[0].reversed ? -1 : 1;
+  for (std::size_t k = 0; k < m.levels.size(); ++k) {
+    const std::vector<std::uint32_t>& idx = m.levels[k];
+    for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
+      const double* uv[3] = {&m.uv[2 * idx[i]], &m.uv[2 * idx[i + 1]], &m.uv[2 * idx[i + 2]]};
+      bool below = false, above = false;
+      for (const double* c : uv) below = below || c[0] < 1 - 1e-9, above = above || c[0] > 1 + 1e-9;
+      if (below && above) continue;
+      EXPECT_EQ(triangleFacing(m.positions.data(), m.normals.data(), &idx[i]), TriangleFacing::kFacing)
+          << "level " << k << ", triangle " << i / 3;
+      const double cu = (uv[0][0] + uv[1][0] + uv[2][0]) / 3, cv = (uv[0][1] + uv[1][1] + uv[2][1]) / 3;
+      for (int c = 0; c < 3; ++c) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        surface->D1(uv[c][0] + 1e-6 * (cu - uv[c][0]), uv[c][1] + 1e-6 * (cv - uv[c][1]), p, du, dv);
+        const gp_Vec exact = sign * du.Crossed(dv).Normalized();
+        const float* n = &m.normals[3 * idx[i + c]];
+        const double angle = exact.Angle(gp_Vec(n[0], n[1], n[2])) * 180 / M_PI;
+        EXPECT_LT(angle, 1.0) << "level " << k << ", corner (" << uv[c][0] << ", " << uv[c][1] << ")";
+        ++checked;
+      }
+    }
+  }
+  return checked;
+}
+
+// An L-shaped face on the bent sheet: all of the first span and the upper half of the second. Its
+// side from (1, 0) to (1, 0.5) runs along the crease with the face below it only, and its
+// parameter box reaches past the knot, where the evaluators take the span above: the vertices on
+// that side showed the normal of the part bent up (90 degrees off on a sheet-metal bracket; on a
+// sheet folded back, facing away, and the triangles along that side flipped).
+TEST(CreaseNormals, AFaceAlongACreaseShowsItsOwnSidesNormals) {
+  const struct {
+    const char* name;
+    gp_Pnt farRow;
+  } sheets[] = {{"bracket bent by 90 degrees", gp_Pnt(10, 0, 10)}, {"sheet folded back", gp_Pnt(0, 0, 1)}};
+  for (const auto& sheet : sheets) {
+    for (const bool reversed : {false, true}) {
+      SCOPED_TRACE(std::string(sheet.name) + (reversed ? ", face reversed" : ""));
+      const Handle(Geom_BSplineSurface) surface = bentSheet(sheet.farRow);
+      TopoDS_Face face = test::uvPolygonFace(surface, {{0, 0}, {1, 0}, {1, 0.5}, {2, 0.5}, {2, 1}, {0, 1}});
+      if (reversed) face.Reverse();
+      auto model = test::loadShape(face, "l_face_on_a_crease");
+      ASSERT_TRUE(model);
+      for (double d : {0.01, 0.001}) {
+        SCOPED_TRACE("at " + std::to_string(d * 100) + "%");
+        auto t = test::tessellate(*model, test::relative(d));
+        ASSERT_TRUE(t);
+        EXPECT_GT(expectCornersShowTheirSidesNormal(*t, surface), 0);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cetview::brep
