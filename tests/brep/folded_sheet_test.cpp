@@ -102,6 +102,33 @@ TEST(NormalJumps, AcrossAFoldButNotWhereASurfaceBends) {
   EXPECT_FALSE(cylinder.normalJumps(0, 0.5, 2 * M_PI / 3, 0.5, a, b));
 }
 
+// A flat sheet folded along the line u = 0.5: x = (u - 0.5)^2, y = v (a quadratic in u through
+// poles x = 0.25, -0.25, 0.25), its normal +z on one side and -z on the other. Segments across the
+// fold centred on it meet its singular line at the first bisection: that is a fold, not a pole
+// between the ends (the row there does not collapse), however short the segment (on a fuzzed
+// sheet's edges 1e-8 long, taken for poles, the angle split them on and on: 27k triangles, now 1.4k).
+TEST(NormalJumps, AcrossAFoldMetAtTheFirstBisection) {
+  TColgp_Array2OfPnt poles(1, 3, 1, 2);
+  const double x[3] = {0.25, -0.25, 0.25};
+  for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+    for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j)
+      poles.SetValue(i, j, gp_Pnt(x[i - 1], j - 1, 0));
+  TColStd_Array1OfReal knots(1, 2);
+  TColStd_Array1OfInteger uMults(1, 2), vMults(1, 2);
+  knots(1) = 0, knots(2) = 1, uMults(1) = uMults(2) = 3, vMults(1) = vMults(2) = 2;
+  Handle(Geom_BSplineSurface) sheet = new Geom_BSplineSurface(poles, knots, knots, uMults, vMults, 2, 1);
+  const SurfaceEval eval(BRepBuilderAPI_MakeFace(sheet, 1e-7).Face());
+  for (double d : {0.25, 1e-3, 1e-6}) {
+    SCOPED_TRACE("segment " + std::to_string(2 * d) + " long");
+    gp_Pnt p;
+    gp_Dir a, b;
+    ASSERT_TRUE(eval.pointNormal(0.5 - d, 0.3, p, a));
+    ASSERT_TRUE(eval.pointNormal(0.5 + d, 0.3, p, b));
+    EXPECT_LT(a.Dot(b), -0.99);
+    EXPECT_TRUE(eval.normalJumps(0.5 - d, 0.3, 0.5 + d, 0.3, a, b));
+  }
+}
+
 // The face of the whole sheet at 0.1%: every level within its tolerance and the angle off the fold,
 // in a few dozen triangles (44). Splitting for the angle and for flips across the fold ran each level
 // down to its minimum size all along the fold line: 3658 triangles here, 205k on a fuzzed flat fold
