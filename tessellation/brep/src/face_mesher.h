@@ -374,8 +374,9 @@ class FaceMesher {
   // corners, the normal just inside it (on the way to its centroid, off the crease) is the one its
   // crease corners show: the vertex's own output normal where the vertex is new on this level and
   // no triangle has shown it yet, else a twin (a crease through the face: the triangles on each
-  // side show their own). For the output alone, as singularTwins_ (the refinement leaves edges from
-  // a crease to the chordal test). Run before each snapshot.
+  // side show their own). For the output, as singularTwins_ (the refinement leaves edges from a
+  // crease to the chordal test); the side a triangle's fold corners take (triangleSide) leaves such
+  // corners out too, on the levels after. Run before each snapshot.
   void showCreaseCorners(FaceMesh& mesh);
   struct CreaseCorner {
     gp_Dir shown;  // the normal out(v) shows
