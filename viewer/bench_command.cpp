@@ -67,16 +67,17 @@ int runBench(const BenchOptions& o) {
 
 }  // namespace
 
-void addBenchCommand(CLI::App& app, int& exitCode) {
+Command benchCommand() {
   auto options = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "cetview against BRepMesh_IncrementalMesh, side by side");
-  cmd->add_option("models", options->models, "STEP, IGES or .brep files, or 'demo'")->required();
-  cmd->add_option("--deflection", options->deflection, "Chordal deflection: absolute (0.05) or relative (0.1%)");
-  cmd->add_option("--angle", options->angle, "Angular deflection in degrees");
-  cmd->add_option("--threads", options->threads, "Threads of the parallel runs (0: all cores)");
-  cmd->add_flag("--json", options->json, "One JSON object per model per line");
-  cmd->add_flag("--no-measure", options->noMeasure, "Skip deviation, crack and degeneracy measurements");
-  cmd->callback([options, &exitCode] { exitCode = runBench(*options); });
+  Command cmd{"bench", "cetview against BRepMesh_IncrementalMesh, side by side"};
+  cmd.required("models", &options->models, "STEP, IGES or .brep files, or 'demo'")
+      .option("--deflection", &options->deflection, "Chordal deflection: absolute (0.05) or relative (0.1%)")
+      .option("--angle", &options->angle, "Angular deflection in degrees")
+      .option("--threads", &options->threads, "Threads of the parallel runs (0: all cores)")
+      .option("--json", &options->json, "One JSON object per model per line")
+      .option("--no-measure", &options->noMeasure, "Skip deviation, crack and degeneracy measurements");
+  cmd.run = [options] { return runBench(*options); };
+  return cmd;
 }
 
 }  // namespace cetview

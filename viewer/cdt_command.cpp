@@ -1,6 +1,7 @@
 // `cetview cdt IN.poly -o OUT [--json]`: the CET triangulator alone, on Triangle's formats.
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,13 +56,14 @@ int runCdt(const CdtOptions& options) {
 
 }  // namespace
 
-void addCdtCommand(CLI::App& app, int& exitCode) {
+Command cdtCommand() {
   auto options = std::make_shared<CdtOptions>();
-  CLI::App* cmd = app.add_subcommand("cdt", "Constrained Delaunay triangulation of a Triangle .poly file");
-  cmd->add_option("input", options->input, "Input .poly file")->required();
-  cmd->add_option("-o,--output", options->output, "Output base name: writes OUT.node and OUT.ele")->required();
-  cmd->add_flag("--json", options->json, "Print one JSON object instead of the summary line");
-  cmd->callback([options, &exitCode] { exitCode = runCdt(*options); });
+  Command cmd{"cdt", "Constrained Delaunay triangulation of a Triangle .poly file"};
+  cmd.required("input", &options->input, "Input .poly file")
+      .required("-o,--output", &options->output, "Output base name: writes OUT.node and OUT.ele")
+      .option("--json", &options->json, "Print one JSON object instead of the summary line");
+  cmd.run = [options] { return runCdt(*options); };
+  return cmd;
 }
 
 }  // namespace cetview

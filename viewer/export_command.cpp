@@ -72,15 +72,16 @@ int runExport(const ExportOptions& o) {
 
 }  // namespace
 
-void addExportCommand(CLI::App& app, int& exitCode) {
+Command exportCommand() {
   auto options = std::make_shared<ExportOptions>();
-  CLI::App* cmd = app.add_subcommand("export", "Tessellate a model and write the final mesh");
-  cmd->add_option("model", options->model, "STEP, IGES or .brep file, or 'demo'")->required();
-  cmd->add_option("-o,--output", options->output, "Output file: .brep, .glb, .gltf, .obj or .stl")->required();
-  cmd->add_option("--deflection", options->deflection, "Chordal deflection: absolute (0.05) or relative (0.1%)");
-  cmd->add_option("--angle", options->angle, "Angular deflection in degrees");
-  cmd->add_option("--threads", options->threads, "Worker threads (0: all cores)");
-  cmd->callback([options, &exitCode] { exitCode = runExport(*options); });
+  Command cmd{"export", "Tessellate a model and write the final mesh"};
+  cmd.required("model", &options->model, "STEP, IGES or .brep file, or 'demo'")
+      .required("-o,--output", &options->output, "Output file: .brep, .glb, .gltf, .obj or .stl")
+      .option("--deflection", &options->deflection, "Chordal deflection: absolute (0.05) or relative (0.1%)")
+      .option("--angle", &options->angle, "Angular deflection in degrees")
+      .option("--threads", &options->threads, "Worker threads (0: all cores)");
+  cmd.run = [options] { return runExport(*options); };
+  return cmd;
 }
 
 }  // namespace cetview

@@ -197,23 +197,23 @@ int runRender(const RenderCli& cli) {
 
 }  // namespace
 
-void addRenderCommand(CLI::App& app, int& exitCode) {
+Command renderCommand() {
   auto cli = std::make_shared<RenderCli>();
-  CLI::App* cmd = app.add_subcommand("render", "Headless capture of MODEL (a file or 'demo') to a PNG");
-  cmd->add_option("model", cli->model, "STEP, IGES or .brep file, or 'demo'")->required();
-  cmd->add_option("-o,--output", cli->output, "Output PNG")->required();
-  cmd->add_flag("--levels", cli->levels, "Also write OUT-L0.png, OUT-L1.png, ... and one JSON line per level");
-  cmd->add_option("--size", cli->size, "Image size WxH")->capture_default_str();
-  cmd->add_option("--view", cli->view, "iso, front, back, left, right, top or bottom")->capture_default_str();
-  cmd->add_option("--projection", cli->projection, "perspective or orthographic")->capture_default_str();
-  cmd->add_option("--deflection", cli->deflection, "Chordal deflection: relative '0.1%' or absolute")
-      ->capture_default_str();
-  cmd->add_option("--angle", cli->angle, "Angular deflection in degrees")->capture_default_str();
-  cmd->add_option("--threads", cli->threads, "Tessellation threads")->capture_default_str();
-  cmd->add_option("--device", cli->device, "Vulkan device: a substring of its name");
-  cmd->add_option("--display", cli->display, "shaded, shaded-edges or wireframe")->capture_default_str();
-  cmd->add_flag("--validate", cli->validate, "Enable the Vulkan validation layer; any report is an error");
-  cmd->callback([cli, &exitCode] { exitCode = runRender(*cli); });
+  Command cmd{"render", "Headless capture of MODEL (a file or 'demo') to a PNG"};
+  cmd.required("model", &cli->model, "STEP, IGES or .brep file, or 'demo'")
+      .required("-o,--output", &cli->output, "Output PNG")
+      .option("--levels", &cli->levels, "Also write OUT-L0.png, OUT-L1.png, ... and one JSON line per level")
+      .withDefault("--size", &cli->size, "Image size WxH")
+      .withDefault("--view", &cli->view, "iso, front, back, left, right, top or bottom")
+      .withDefault("--projection", &cli->projection, "perspective or orthographic")
+      .withDefault("--deflection", &cli->deflection, "Chordal deflection: relative '0.1%' or absolute")
+      .withDefault("--angle", &cli->angle, "Angular deflection in degrees")
+      .withDefault("--threads", &cli->threads, "Tessellation threads")
+      .option("--device", &cli->device, "Vulkan device: a substring of its name")
+      .withDefault("--display", &cli->display, "shaded, shaded-edges or wireframe")
+      .option("--validate", &cli->validate, "Enable the Vulkan validation layer; any report is an error");
+  cmd.run = [cli] { return runRender(*cli); };
+  return cmd;
 }
 
 }  // namespace cetview

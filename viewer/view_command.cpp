@@ -1099,25 +1099,26 @@ int runView(const ViewCli& cli) {
 
 }  // namespace
 
-void addViewCommand(CLI::App& app, int& exitCode) {
+Command viewCommand() {
   auto cli = std::make_shared<ViewCli>();
-  CLI::App* cmd = app.add_subcommand("view", "Open MODEL (default: the demo part) in a window");
-  cmd->add_option("model", cli->model, "STEP, IGES or .brep file, or 'demo'")->capture_default_str();
-  cmd->add_option("--size", cli->size, "Window size WxH")->capture_default_str();
-  cmd->add_option("--deflection", cli->deflection, "Initial chordal deflection: relative '0.1%' or absolute")
-      ->capture_default_str();
-  cmd->add_option("--angle", cli->angle, "Initial angular deflection in degrees")->capture_default_str();
-  cmd->add_option("--threads", cli->threads, "Tessellation threads")->capture_default_str();
-  cmd->add_option("--device", cli->device, "Vulkan device: a substring of its name");
-  cmd->add_option("--view", cli->view, "iso, front, back, left, right, top or bottom")->capture_default_str();
-  cmd->add_option("--projection", cli->projection, "perspective or orthographic")->capture_default_str();
-  cmd->add_option("--display", cli->display, "shaded, shaded-edges or wireframe")->capture_default_str();
-  cmd->add_flag("--validate", cli->validate, "Enable the Vulkan validation layer; any report fails the run");
-  cmd->add_flag("--no-vsync", cli->noVsync, "Present without waiting for vertical blank where possible");
-  cmd->add_option("--frames", cli->frames, "Quit after N frames (0: run until closed)");
-  cmd->add_option("--screenshot", cli->screenshot, "Save the last frame (panels included) to this PNG");
-  cmd->add_option("--script", cli->script, "Replay commands from this file (see viewer/view_script.h)");
-  cmd->callback([cli, &exitCode] { exitCode = runView(*cli); });
+  Command cmd{"view", "Open MODEL (default: the demo part) in a window"};
+  cmd.withDefault("model", &cli->model, "STEP, IGES or .brep file, or 'demo'")
+      .withDefault("--size", &cli->size, "Window size WxH")
+      .withDefault("--deflection", &cli->deflection,
+                   "Initial chordal deflection: relative '0.1%' or absolute")
+      .withDefault("--angle", &cli->angle, "Initial angular deflection in degrees")
+      .withDefault("--threads", &cli->threads, "Tessellation threads")
+      .option("--device", &cli->device, "Vulkan device: a substring of its name")
+      .withDefault("--view", &cli->view, "iso, front, back, left, right, top or bottom")
+      .withDefault("--projection", &cli->projection, "perspective or orthographic")
+      .withDefault("--display", &cli->display, "shaded, shaded-edges or wireframe")
+      .option("--validate", &cli->validate, "Enable the Vulkan validation layer; any report fails the run")
+      .option("--no-vsync", &cli->noVsync, "Present without waiting for vertical blank where possible")
+      .option("--frames", &cli->frames, "Quit after N frames (0: run until closed)")
+      .option("--screenshot", &cli->screenshot, "Save the last frame (panels included) to this PNG")
+      .option("--script", &cli->script, "Replay commands from this file (see viewer/view_script.h)");
+  cmd.run = [cli] { return runView(*cli); };
+  return cmd;
 }
 
 }  // namespace cetview
