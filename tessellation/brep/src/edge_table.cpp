@@ -459,15 +459,45 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       const gp_Vec n = du.Crossed(dv);
       return n.Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude() ? gp_Vec(0, 0, 0) : n;
     };
-    auto normalsAt = [&](double t, gp_Vec* n) {
+    // On a crease of face k's surface (SurfaceEval::onCrease: a C0 knot line) the evaluators give
+    // the normal of one side, the knot span OpenCASCADE picks, which need not be the side a segment
+    // leaving uv along `along` (UV) lies on, with the face on `side` of it. Sets n to the normal
+    // just off the crease that way (and a tenth as far into the face, for a segment running along
+    // the crease); false (n untouched) where uv is not on a crease. An edge along the bend of a
+    // bracket (90 degrees) took the far plate's normals at its ends: every apex standing on it
+    // failed the angle, and it was halved level after level (4098 points at 0.1% for a side 5
+    // long); an edge ending on the crease was halved towards that end down to the minimum size.
+    auto creaseSide = [&](std::size_t k, const gp_Pnt2d& uv, gp_Vec2d along, int side, gp_Vec& n) {
+      const FaceScale& scale = *info.faces[k].scale;
+      if (!scale.eval || !scale.eval->onCrease(uv.X(), uv.Y()) || !(along.Magnitude() > 0)) return false;
+      along.Normalize();
+      const gp_Vec2d off = (along + gp_Vec2d(-along.Y(), along.X()) * (0.1 * side)) * 1e-7;
+      gp_Pnt p;
+      gp_Vec du, dv;
+      d1(k, uv.X() + off.X() * (scale.uMax - scale.uMin), uv.Y() + off.Y() * (scale.vMax - scale.vMin), p, du,
+         dv);
+      n = crossOrNone(du, dv);
+      return true;
+    };
+    // The faces' normals at t: below, the limit coming from smaller t (a segment ending at t);
+    // above, from larger t (a segment starting there). They differ only on creases (creaseSide).
+    auto normalsAt = [&](double t, gp_Vec* below, gp_Vec* above) {
       for (std::size_t k = 0; k < uses; ++k) {
         const FaceUse& use = info.faces[k];
-        const gp_Pnt2d uv = use.pcurve->Value(pcurveParameter(info, use, t));
+        const double s = pcurveParameter(info, use, t);
+        const gp_Pnt2d uv = use.pcurve->Value(s);
         gp_Pnt p;
         gp_Vec du, dv;
         d1(k, uv.X(), uv.Y(), p, du, dv);
         // At a pole one derivative is rounding noise: no normal to compare.
-        n[k] = du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12 ? gp_Vec(0, 0, 0) : crossOrNone(du, dv);
+        below[k] = above[k] =
+            du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12 ? gp_Vec(0, 0, 0) : crossOrNone(du, dv);
+        if (!use.scale->eval || !use.scale->eval->hasCreases() || below[k].Magnitude() == 0) continue;
+        gp_Pnt2d onCurve;
+        gp_Vec2d tangent;  // along increasing t
+        use.pcurve->D1(s, onCurve, tangent);
+        if (use.last < use.first) tangent.Reverse();
+        if (creaseSide(k, uv, tangent, use.side, above[k])) creaseSide(k, uv, -tangent, -use.side, below[k]);
       }
     };
     // The segment's chord in face k's UV: its ends, the same in the face's scaled UV (the face
@@ -617,8 +647,10 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         const gp_Vec inside = normalAt(k, au, av, tmp);
         if (inside.Dot(n) < 0) n = inside;
       };
-      faceSide(0, na);
-      faceSide(1, nb);
+      // On a crease line: the limit along the chord, on the face's side (creaseSide).
+      const gp_Vec2d ab(c.a, c.b);
+      if (!creaseSide(k, c.a, ab, side, na)) faceSide(0, na);
+      if (!creaseSide(k, c.b, -ab, -side, nb)) faceSide(1, nb);
       gp_Vec nApex;
       auto spreadAt = [&](double au, double av, gp_Pnt& apex) {
         nApex = normalAt(k, au, av, apex);
@@ -800,8 +832,9 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       gp_Pnt tmp;
       curve.D1(ta, tmp, s.da);
       curve.D1(tb, tmp, s.db);
-      normalsAt(ta, s.na);
-      normalsAt(tb, s.nb);
+      gp_Vec unused[2];
+      normalsAt(ta, unused, s.na);
+      normalsAt(tb, s.nb, unused);
       return s;
     };
     if (seedT.empty()) {
@@ -830,16 +863,16 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     std::size_t examined = 0;
     gp_Pnt pPrev = pointAt(0, seedT[0]);
     gp_Pnt tmp;
-    gp_Vec dPrev, nPrev[2];
+    gp_Vec dPrev, nPrev[2], nUnused[2];
     curve.D1(seedT[0], tmp, dPrev);
-    normalsAt(seedT[0], nPrev);
+    normalsAt(seedT[0], nUnused, nPrev);
     out.t.push_back(seedT[0]);
     out.p.push_back(pPrev);
     for (std::size_t i = 1; i < seedT.size(); ++i) {
       const gp_Pnt pNext = pointAt(i, seedT[i]);
-      gp_Vec dNext, nNext[2];
+      gp_Vec dNext, nNext[2], nNextAbove[2];  // the limits coming from this segment and from the next
       curve.D1(seedT[i], tmp, dNext);
-      normalsAt(seedT[i], nNext);
+      normalsAt(seedT[i], nNext, nNextAbove);
       // Depth-first, right half pushed first, so points come out in increasing t.
       stack.push_back({seedT[i - 1], seedT[i], pPrev, pNext, dPrev, dNext, {nPrev[0], nPrev[1]}, {nNext[0], nNext[1]}, 0});
       while (!stack.empty()) {
@@ -856,15 +889,17 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         }
         const double tm = 0.5 * (s.ta + s.tb);
         gp_Pnt pm;
-        gp_Vec dm, nm[2];
+        gp_Vec dm, nmBelow[2], nmAbove[2];
         curve.D1(tm, pm, dm);
-        normalsAt(tm, nm);
-        stack.push_back({tm, s.tb, pm, s.pb, dm, s.db, {nm[0], nm[1]}, {s.nb[0], s.nb[1]}, s.depth + 1});
-        stack.push_back({s.ta, tm, s.pa, pm, s.da, dm, {s.na[0], s.na[1]}, {nm[0], nm[1]}, s.depth + 1});
+        normalsAt(tm, nmBelow, nmAbove);
+        stack.push_back(
+            {tm, s.tb, pm, s.pb, dm, s.db, {nmAbove[0], nmAbove[1]}, {s.nb[0], s.nb[1]}, s.depth + 1});
+        stack.push_back(
+            {s.ta, tm, s.pa, pm, s.da, dm, {s.na[0], s.na[1]}, {nmBelow[0], nmBelow[1]}, s.depth + 1});
       }
       pPrev = pNext;
       dPrev = dNext;
-      nPrev[0] = nNext[0], nPrev[1] = nNext[1];
+      nPrev[0] = nNextAbove[0], nPrev[1] = nNextAbove[1];
     }
   } catch (const Standard_Failure&) {
     out.t = {info.first, info.last};

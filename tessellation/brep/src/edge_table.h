@@ -17,6 +17,7 @@
 #include "brep/tessellator.h"
 #include "brep/worker_pool.h"
 #include "bspline_direct.h"
+#include "surface_eval.h"
 #include "uv_axis.h"
 
 namespace cetview::brep {
@@ -54,6 +55,7 @@ class EdgeTable {
     // Not a plane: a narrow face folds under coarse chords that sag across it (foldsAcross).
     bool curved = false;
     std::shared_ptr<const BSplineDirect> direct;  // a B-spline face's direct evaluator (immutable, shared)
+    const SurfaceEval* eval = nullptr;  // the face's evaluator (its creases), owned by the tessellator
   };
   // Before the first discretise(): every face's scale (from any thread, one call per face), then
   // scalesSet() once, from one thread.
