@@ -469,7 +469,8 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     // long); an edge ending on the crease was halved towards that end down to the minimum size.
     auto creaseSide = [&](std::size_t k, const gp_Pnt2d& uv, gp_Vec2d along, int side, gp_Vec& n) {
       const FaceScale& scale = *info.faces[k].scale;
-      if (!scale.eval || !scale.eval->onCrease(uv.X(), uv.Y()) || !(along.Magnitude() > 0)) return false;
+      if (scale.creases.empty() || !scale.creases.on(uv.X(), uv.Y()) || !(along.Magnitude() > 0))
+        return false;
       along.Normalize();
       const gp_Vec2d off = (along + gp_Vec2d(-along.Y(), along.X()) * (0.1 * side)) * 1e-7;
       gp_Pnt p;
@@ -492,7 +493,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         // At a pole one derivative is rounding noise: no normal to compare.
         below[k] = above[k] =
             du.Magnitude() < 1e-12 || dv.Magnitude() < 1e-12 ? gp_Vec(0, 0, 0) : crossOrNone(du, dv);
-        if (!use.scale->eval || !use.scale->eval->hasCreases() || below[k].Magnitude() == 0) continue;
+        if (use.scale->creases.empty() || below[k].Magnitude() == 0) continue;
         gp_Pnt2d onCurve;
         gp_Vec2d tangent;  // along increasing t
         use.pcurve->D1(s, onCurve, tangent);

@@ -55,7 +55,7 @@ class EdgeTable {
     // Not a plane: a narrow face folds under coarse chords that sag across it (foldsAcross).
     bool curved = false;
     std::shared_ptr<const BSplineDirect> direct;  // a B-spline face's direct evaluator (immutable, shared)
-    const SurfaceEval* eval = nullptr;  // the face's evaluator (its creases), owned by the tessellator
+    CreaseLines creases;                          // the surface's crease lines (SurfaceEval::creaseLines)
   };
   // Before the first discretise(): every face's scale (from any thread, one call per face), then
   // scalesSet() once, from one thread.

@@ -460,6 +460,10 @@ bool SurfaceEval::near(const std::vector<double>& creases, double period, double
   return period > 0 && x + band >= creases.front() + period;  // the next period's first crease
 }
 
+bool CreaseLines::on(double pu, double pv) const {
+  return SurfaceEval::near(u, uPeriod, pu, uBand) || SurfaceEval::near(v, vPeriod, pv, vBand);
+}
+
 bool SurfaceEval::sharpKnotBetween(bool uDir, double a, double b, double near, double& knot) const {
   const std::vector<double>& knots = uDir ? uSharpKnots_ : vSharpKnots_;
   bool found = false;

@@ -29,6 +29,16 @@ namespace cetview::brep {
 void faceSideD1(const BSplineDirect* direct, const Adaptor3d_Surface& surface, double uMin, double uMax, double vMin,
                 double vMax, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv);
 
+// A surface's crease lines (SurfaceEval::onCrease), as a value: for users that outlive the
+// evaluator (the edge table keeps each face's while its evaluator goes with the face's mesher).
+struct CreaseLines {
+  std::vector<double> u, v;         // parameters of the lines, increasing
+  double uPeriod = 0, vPeriod = 0;  // 0 unless periodic: the lines repeat with it
+  double uBand = 0, vBand = 0;      // a point this near a line is on it
+  bool empty() const { return u.empty() && v.empty(); }
+  bool on(double pu, double pv) const;
+};
+
 class SurfaceEval {
  public:
   // `chordal` and `angleRad` (the finest tolerances the face will be meshed to; 0: unknown) set how
@@ -128,7 +138,11 @@ class SurfaceEval {
     return near(uCreases_, uPeriod_, u, 1e-9 * (uMax - uMin)) ||
            near(vCreases_, vPeriod_, v, 1e-9 * (vMax - vMin));
   }
+  friend struct CreaseLines;
   bool hasCreases() const { return !uCreases_.empty() || !vCreases_.empty(); }
+  CreaseLines creaseLines() const {
+    return {uCreases_, vCreases_, uPeriod_, vPeriod_, 1e-9 * (uMax - uMin), 1e-9 * (vMax - vMin)};
+  }
   // A sharp knot (findSharpKnots: a crease where the surface is smooth but turns within a band
   // narrower than any split) strictly between a and b (in u when uDir, else v; a < b), the one
   // nearest `near`; false when there is none.

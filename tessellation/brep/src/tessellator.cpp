@@ -128,7 +128,7 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
       scale.bendsBeside = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere;
       scale.curved = type != GeomAbs_Plane;
       scale.direct = eval->direct();
-      scale.eval = eval.get();
+      scale.creases = eval->creaseLines();
       scale.valid = true;
       faces[f].eval = std::move(eval);
     } catch (const Standard_Failure&) {
