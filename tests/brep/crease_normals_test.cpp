@@ -136,7 +136,8 @@ TEST(CreaseNormals, SidesAlongAndOntoTheBendOfFlatPlatesAreNotSplit) {
 // A face across the bend of a sheet rolled along it (curved on both sides, so refined there): the
 // vertices on the crease inside the face and on its sides are used by triangles on both sides, and
 // each side's triangles show their own normal there (a twin vertex for the other side,
-// FaceMesher::showCreaseCorners). Without the twins, 141 corners fail.
+// FaceMesher::showCreaseCorners). Without the twins, 141 checks of corners and facing fail, and
+// the twin count on every run.
 TEST(CreaseNormals, ACreaseThroughAFaceShowsBothSidesNormals) {
   for (const gp_Pnt& farRow : {gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}) {
     const Handle(Geom_BSplineSurface) surface = bentSheet(farRow, 3);
