@@ -459,14 +459,15 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       const gp_Vec n = du.Crossed(dv);
       return n.Magnitude() <= 1e-10 * du.Magnitude() * dv.Magnitude() ? gp_Vec(0, 0, 0) : n;
     };
-    // On a crease of face k's surface (SurfaceEval::onCrease: a C0 knot line) the evaluators give
-    // the normal of one side, the knot span OpenCASCADE picks, which need not be the side a segment
-    // leaving uv along `along` (UV) lies on, with the face on `side` of it. Sets n to the normal
-    // just off the crease that way (and a tenth as far into the face, for a segment running along
-    // the crease); false (n untouched) where uv is not on a crease. An edge along the bend of a
-    // bracket (90 degrees) took the far plate's normals at its ends: every apex standing on it
-    // failed the angle, and it was halved level after level (4098 points at 0.1% for a side 5
-    // long); an edge ending on the crease was halved towards that end down to the minimum size.
+    // On a crease of face k's surface (SurfaceEval::onCrease: a C0 knot line, or a sharp knot's,
+    // where the two limits nearly agree) the evaluators give the normal of one side, the knot span
+    // OpenCASCADE picks, which need not be the side a segment leaving uv along `along` (UV) lies
+    // on, with the face on `side` of it. Sets n to the normal just off the crease that way (and a
+    // tenth as far into the face, for a segment running along the crease); false (n untouched)
+    // where uv is not on a crease. An edge along the bend of a bracket (90 degrees) took the far
+    // plate's normals at its ends: every apex standing on it failed the angle, and it was halved
+    // level after level (4098 points at 0.1% for a side 5 long); an edge ending on the crease was
+    // halved towards that end down to the minimum size.
     auto creaseSide = [&](std::size_t k, const gp_Pnt2d& uv, gp_Vec2d along, int side, gp_Vec& n) {
       const FaceScale& scale = *info.faces[k].scale;
       if (scale.creases.empty() || !scale.creases.on(uv.X(), uv.Y()) || !(along.Magnitude() > 0))
