@@ -76,13 +76,15 @@ TEST(CollapsedSurface, AnEdgeBesideAPatchCollapsedOntoASegmentIsNotHalvedForNois
 // (twenty-fifth session), the side v = vmin takes 33 points instead of 11 and the level 1722
 // triangles, 8 flipped: 5 across folds and 3 beside the corner where the fan starts, whose corners'
 // normals the refinement reads within 12 degrees of each other where the output's normals (and so
-// the check) are 72 degrees apart (open).
+// the check) are 72 degrees apart (open). Since knot lines where the surface is smooth are no
+// creases (thirty-sixth session: five of its six u knots, degree 1 there), the angle is tested
+// across them too: 3176 triangles, 15 flipped, all across folds.
 TEST(CollapsedSurface, AFanCollapsedOntoAPointIsNotSplitOnAndOnBesideIt) {
   const std::vector<FaceQuality> levels =
       test::testDataEveryLevel("collapsed_fan.brep", test::relative(0.055875193901701303, 27.75532158388647));
   ASSERT_FALSE(levels.empty());
   EXPECT_LE(levels.back().triangles, 5000u) << "91916 when the samples' short projections decide";
-  EXPECT_LE(levels.back().flipped, 13u) << "19643 flipped";
+  EXPECT_LE(levels.back().flipped, 15u) << "19643 flipped";
   EXPECT_LE(levels.back().flipped - levels.back().flippedAcrossFolds, 3u);
 }
 

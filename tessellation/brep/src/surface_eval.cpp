@@ -243,6 +243,8 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   try {
     creases(true, uCreases_);
     creases(false, vCreases_);
+    keepTurningBreaks(true, uCreases_);
+    keepTurningBreaks(false, vCreases_);
   } catch (const Standard_Failure&) {
     uCreases_.clear(), vCreases_.clear();
   }
@@ -432,6 +434,70 @@ void SurfaceEval::buildConformalSphereAxes() {
     merc.t.push_back(t1);
   }
   vAxis_ = merc;
+}
+
+void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) const {
+  const double lo = uDir ? su0_ : sv0_, hi = uDir ? su1_ : sv1_;
+  const double a0 = uDir ? vMin : uMin, a1 = uDir ? vMax : uMax;  // along the line
+  const double cosTurn = std::cos(kCreaseTurnRad);
+  // Where along the lines: kCreaseSamples evenly, and on a B-spline the knots of the other direction
+  // inside the box and their spans' middles (a jump that lives in one narrow span shows there), up
+  // to kCreaseSampleBudget samples over all the direction's lines.
+  std::vector<double> along;
+  for (int k = 0; k < kCreaseSamples; ++k) along.push_back(a0 + (a1 - a0) * k / (kCreaseSamples - 1));
+  if (surface_.GetType() == GeomAbs_BSplineSurface && !breaks.empty()) {
+    const Handle(Geom_BSplineSurface) bs = surface_.Surface().BSpline();
+    const int n = uDir ? bs->NbVKnots() : bs->NbUKnots();
+    std::vector<double> knots;
+    for (int i = 1; i <= n; ++i) {
+      const double t = uDir ? bs->VKnot(i) : bs->UKnot(i);
+      if (i > 1) knots.push_back(0.5 * (knots.back() + t));
+      knots.push_back(t);
+    }
+    const std::size_t room = kCreaseSampleBudget / breaks.size();
+    const std::size_t stride = knots.size() > room ? (knots.size() + room - 1) / std::max<std::size_t>(room, 1) : 1;
+    for (std::size_t i = 0; i < knots.size(); i += stride)
+      if (knots[i] > a0 && knots[i] < a1) along.push_back(knots[i]);
+  }
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < breaks.size(); ++i) {
+    const double c = breaks[i];
+    // One-sided limits: a step well inside the spans on either side (the nearest other break or
+    // the surface's end bounds them).
+    double gap = std::numeric_limits<double>::max();
+    if (i > 0) gap = std::min(gap, c - breaks[i - 1]);
+    if (i + 1 < breaks.size()) gap = std::min(gap, breaks[i + 1] - c);
+    if (c > lo) gap = std::min(gap, c - lo);
+    if (c < hi) gap = std::min(gap, hi - c);
+    if (!(gap > 0) || gap == std::numeric_limits<double>::max()) gap = std::max(hi - lo, 1.0);
+    const double step =
+        std::max(1e-6 * gap, 16 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(c)));
+    bool turns = false;
+    for (std::size_t k = 0; k < along.size() && !turns; ++k) {
+      const double a = along[k];
+      gp_Vec n[2];
+      for (int side = 0; side < 2; ++side) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        const double u = uDir ? c : a, v = uDir ? a : c;
+        if (direct_) {  // exactly on the line, in the span that ends there and the one that starts there
+          const bool below = side == 0;
+          direct_->d1(u, v, uDir ? (below ? direct_->uSpanBelow(u) : direct_->uSpan(u)) : direct_->uSpan(u),
+                      uDir ? direct_->vSpan(v) : (below ? direct_->vSpanBelow(v) : direct_->vSpan(v)), p, du,
+                      dv);
+        } else {
+          const double t = side == 0 ? c - step : c + step;
+          surface_.D1(uDir ? t : u, uDir ? v : t, p, du, dv);
+        }
+        n[side] = du.Crossed(dv);
+      }
+      const double m0 = n[0].Magnitude(), m1 = n[1].Magnitude();
+      if (!(m0 > 0) || !(m1 > 0) || !std::isfinite(m0) || !std::isfinite(m1)) continue;  // a pole: no normal
+      turns = n[0].Dot(n[1]) < cosTurn * m0 * m1;
+    }
+    if (turns) kept.push_back(c);
+  }
+  breaks.swap(kept);
 }
 
 bool SurfaceEval::crosses(const std::vector<double>& creases, double period, double a, double b) {

@@ -253,6 +253,17 @@ class SurfaceEval {
   // face). Knots that are creases already (not C1) are left out. Appended to `out`; the mesher also
   // puts its deviation splits beside such a knot onto its line (FaceMesher::ontoSharpKnot).
   static constexpr double kSharpKnotSpeedRatio = 100;
+  // Of a direction's C1 breaks (`breaks`, increasing), keeps those where the normal turns across
+  // the line by more than kCreaseTurnRad somewhere over the face's box (its limits from either
+  // side, at samples along the line). A break of the parametrisation alone (a knot of full
+  // multiplicity where the surface is tangent-continuous: the STEP and IGES B-splines pieced from
+  // Bezier patches) is no crease: the normal is continuous there, and the angle test must hold
+  // across it (taken for creases, hammer's, linkrods' and r0901's knot lines were exempt from it,
+  // and triangles spanned them with corner normals up to 40 degrees apart).
+  static constexpr double kCreaseTurnRad = 0.5 * M_PI / 180;
+  static constexpr int kCreaseSamples = 17;
+  static constexpr std::size_t kCreaseSampleBudget = 20000;
+  void keepTurningBreaks(bool uDir, std::vector<double>& breaks) const;
   void findSharpKnots(bool uDir, const Axis& axis, double reach, double angleRad, std::vector<double>& out) const;
   // A sphere's scaled UV is conformal: x = r u and y = r ln tan(pi/4 + v/2) (Mercator), piecewise
   // linear in spans of latitude across the face (the scale changing by kConformalSpanChange at most
