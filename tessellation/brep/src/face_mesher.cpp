@@ -721,6 +721,12 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
       const int a = (i + 1) % 3, b = (i + 2) % 3;
       if (eval_.crossesCrease(c.u[a], c.w[a], c.u[b], c.w[b])) {
         acrossCrease = true;
+        // Its ends off the crease on either side, their normals further apart than the angle: the
+        // triangle bridges the crease (creasePoint).
+        if (!m.isConstrained(t, i) && !singular_[v[a]] && !singular_[v[b]] &&
+            normal_[v[a]].Dot(normal_[v[b]]) < angleSplit.minCos &&
+            creaseBetween(c.u[a], c.w[a], c.u[b], c.w[b]))
+          r.flags |= TriangleRecord::kAcrossCrease;
         continue;
       }
       if (singular_[v[a]] || singular_[v[b]] || m.isConstrained(t, i)) continue;
@@ -1322,6 +1328,43 @@ void FaceMesher::ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& 
   }
 }
 
+bool FaceMesher::creaseBetween(double ua, double va, double ub, double vb) const {
+  double line = 0;
+  return eval_.c0CreaseBetween(true, std::min(ua, ub), std::max(ua, ub), line) ||
+         eval_.c0CreaseBetween(false, std::min(va, vb), std::max(va, vb), line);
+}
+
+bool FaceMesher::creasePoint(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  const Corners c = corners(t, mesh);
+  double longest = -1;
+  for (int i = 0; i < 3; ++i) {
+    const int a = (i + 1) % 3, b = (i + 2) % 3;
+    if (m.isConstrained(t, i) || singular_[c.v[a]] || singular_[c.v[b]]) continue;
+    const double length = c.p[a].Distance(c.p[b]);
+    if (length <= longest) continue;
+    for (const bool uDir : {true, false}) {
+      const double xa = uDir ? c.u[a] : c.w[a], xb = uDir ? c.u[b] : c.w[b];
+      double line = 0;
+      if (!eval_.c0CreaseBetween(uDir, std::min(xa, xb), std::max(xa, xb), line)) continue;
+      // The line is straight in the scaled plane (each direction scales on its own), as the edge is.
+      const cet::Point2 qa = cdt_->point(c.v[a]), qb = cdt_->point(c.v[b]);
+      const cet::Point2 ql = scaled(uDir ? line : c.u[a], uDir ? c.w[a] : line);
+      const double ya = uDir ? qa.x : qa.y, yb = uDir ? qb.x : qb.y, yl = uDir ? ql.x : ql.y;
+      if (ya == yb) continue;
+      const double f = std::clamp((yl - ya) / (yb - ya), 0.0, 1.0);
+      eval_.unscaled(cet::Point2{qa.x + f * (qb.x - qa.x), qa.y + f * (qb.y - qa.y)}, u, v);
+      if (uDir)
+        u = line;
+      else
+        v = line;
+      longest = length;
+      break;
+    }
+  }
+  return longest >= 0;
+}
+
 // Beside a pole, or a part of the surface collapsed onto a point, the surface's speed changes by
 // orders of magnitude within a triangle, and the refinement's few Gauss-Newton steps from a sample's
 // (u, v) may stop short of its foot: the distance read is to where they stopped, the same whatever
@@ -1472,8 +1515,8 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       const TriangleRecord* r = &records_.at(t);
       // Barycentric split point: 0 the centroid, 1 + i the midpoint of edge i.
       int at = -1, flipEdge = -1;
-      bool forAngle = false, forDeviation = false, forFold = false;
-      double foldU = 0, foldV = 0;
+      bool forAngle = false, forDeviation = false, forFold = false, forCrease = false;
+      double foldU = 0, foldV = 0;  // (also a crease point's)
       gp_Dir foldBefore, foldAfter;
       // Corners off the surface (edge points of an edge that strays from it within its tolerance)
       // hold the triangle that far from it at those corners whatever its size. Within the level's
@@ -1524,6 +1567,14 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
           at = 0;
           forAngle = false, forFold = true;
         }
+      } else if ((r->flags & TriangleRecord::kAcrossCrease) && r->longest > minSize &&
+                 creasePoint(t, mesh, foldU, foldV)) {
+        // Corners a hair either side of a crease (points the deviation put beside it): the facet
+        // stands for both sides and shows each one's normal at its corners, a streak of the other
+        // side's shading across it. A point on the crease where the edge crosses it, with a normal
+        // for each side (showCreaseCorners), puts the triangles on either side.
+        at = 0;
+        forCrease = true;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && !allSingular(t) &&
                  !inLineOnChordIntoPole(t, *r) &&
                  (r->longest > minSize ||
@@ -1579,7 +1630,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       }
       double u = 0, v = 0;
       eval_.blend(3, b, cu, cv, u, v);
-      if (forFold) u = foldU, v = foldV;
+      if (forFold || forCrease) u = foldU, v = foldV;
       // Too far from a surface across a sharp knot: the worst sample sits by the knot's line, where
       // the surface bends, and a point beside it leaves the bend cut by the triangles on either side
       // and slivers along it (a fuzzed band: 234 triangles flipped beside the knot). A point on the
@@ -1596,10 +1647,10 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // chord itself: a cascade towards the boundary that no size test stops.
       const bool largeFlipped = flipped && r->longest > level.chordal && !onChord(t);
       // A fold point stays on the fold: taken where it keeps the chords' clearance, else not at all.
-      bool override = !forFold && (tooFar || largeFlipped);
-      const bool safe = forFold ? clearOfChords(u, v, true)
-                                : (r->flags & TriangleRecord::kCollapsed) ||
-                                      safeSplit(t, u, v, mesh, flipped, forAngle, at - 1);
+      bool override = !forFold && !forCrease && (tooFar || largeFlipped);
+      const bool safe = forFold || forCrease ? clearOfChords(u, v, true)
+                                             : (r->flags & TriangleRecord::kCollapsed) ||
+                                                   safeSplit(t, u, v, mesh, flipped, forAngle, at - 1);
       // Overriding the clearance on the refinement's reading alone: where its few Gauss-Newton steps
       // stop short of the foot (a parametrisation far from uniform, its speed across a side 1e-4 of
       // that along it), the reading stays over the tolerance however near the chord the point comes,
@@ -1609,7 +1660,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // decides such an override, against the margin the refinement aims at rather than the
       // tolerance itself (against the tolerance, a fuzzed face's last level read 1.0003x); asked
       // only for splits that break the clearance, so seldom.
-      if (!safe && !forFold && tooFar && !largeFlipped && !exactDeviation_ &&
+      if (!safe && !forFold && !forCrease && tooFar && !largeFlipped && !exactDeviation_ &&
           !(r->flags & TriangleRecord::kCollapsed) && measuredWithin(t, mesh, reachable)) {
         override = false;
         if (settings_.trace)

@@ -540,6 +540,30 @@ bool SurfaceEval::sharpKnotBetween(bool uDir, double a, double b, double near, d
   return found;
 }
 
+bool SurfaceEval::c0CreaseBetween(bool uDir, double a, double b, double& line) const {
+  const std::vector<double>& creases = uDir ? uCreases_ : vCreases_;
+  const std::vector<double>& sharp = uDir ? uSharpKnots_ : vSharpKnots_;
+  const double period = uDir ? uPeriod_ : vPeriod_;
+  const double band = 1e-9 * (uDir ? uMax - uMin : vMax - vMin);
+  if (creases.empty() || !(b - a > 2 * band)) return false;
+  // Shifts of the crease list by whole periods that can land between a and b.
+  double k0 = 0, k1 = 0;
+  if (period > 0) {
+    k0 = std::floor((a - creases.back()) / period), k1 = std::ceil((b - creases.front()) / period);
+    if (k1 - k0 > 4) return false;  // wider than the period: no one crossing
+  }
+  for (double k = k0; k <= k1; ++k) {
+    const double shift = k * period;
+    for (auto it = std::upper_bound(creases.begin(), creases.end(), a + band - shift);
+         it != creases.end() && *it + shift < b - band; ++it) {
+      if (std::binary_search(sharp.begin(), sharp.end(), *it)) continue;
+      line = *it + shift;
+      return true;
+    }
+  }
+  return false;
+}
+
 bool SurfaceEval::collapsed() const {
   if (!(uMax > uMin && vMax > vMin) || gridArea_ > 1e3 * kNoArea) return false;
   // A closer look: the 5x5 grid may have missed where the area is.

@@ -147,6 +147,10 @@ class SurfaceEval {
   // narrower than any split) strictly between a and b (in u when uDir, else v; a < b), the one
   // nearest `near`; false when there is none.
   bool sharpKnotBetween(bool uDir, double a, double b, double near, double& knot) const;
+  // A crease line that is not a sharp knot (the surface is not C1 there and its normal turns: a
+  // knot of full multiplicity, a C0 seam) strictly between a and b (in u when uDir, else v; a <
+  // b; off both by more than onCrease's band), in the period that holds a and b; false when none.
+  bool c0CreaseBetween(bool uDir, double a, double b, double& line) const;
   // True when the unit normal jumps on the UV segment from (ua, va) to (ub, vb), whose ends' normals
   // na and nb oppose (a negative dot product): bisecting towards the half that turns further, the
   // turn stays above 90 degrees down to 2^-kJumpBisections of the segment. A parametrisation that

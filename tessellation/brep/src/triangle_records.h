@@ -26,8 +26,9 @@ struct TriangleRecord {
   std::uint8_t worstSample = 0;                // 0 centroid, 1 + i the midpoint of edge i (opposite corner i)
   std::uint8_t angleEdge = 0;                  // edge whose ends' normals differ most
   std::uint8_t longestFreeEdge = 3;            // longest unconstrained edge (3: none)
-  std::uint8_t flags =
-      0;  // kFlipped | kCollapsed | kUnmeasured | kPoleCorner | kInLine | kMeasureChordal | kAcrossFold
+  // kFlipped | kCollapsed | kUnmeasured | kPoleCorner | kInLine | kMeasureChordal | kAcrossFold |
+  // kAcrossCrease
+  std::uint8_t flags = 0;
   static constexpr std::uint8_t kFlipped = 1;  // no area, or no usable corner normal to compare
   static constexpr std::uint8_t kCollapsed = 2;   // two corners share a 3D point (pole, gap): dropped
   static constexpr std::uint8_t kUnmeasured = 4;  // the angle split it: no chordal samples taken
@@ -37,6 +38,9 @@ struct TriangleRecord {
       32;  // unmeasured, but its angle split was dropped: measure it
   // A free edge between regular corners crosses a fold of the parametrisation (FaceMesher::foldPoint).
   static constexpr std::uint8_t kAcrossFold = 64;
+  // A free edge between regular corners crosses a crease (SurfaceEval::c0CreaseBetween) and its ends'
+  // normals differ by more than the angle: the triangle bridges the crease (FaceMesher::creasePoint).
+  static constexpr std::uint8_t kAcrossCrease = 128;
 
   bool matches(cet::VertexId a, cet::VertexId b, cet::VertexId c) const {
     return v[0] == a && v[1] == b && v[2] == c;
