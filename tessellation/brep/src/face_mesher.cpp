@@ -725,7 +725,7 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
         // triangle bridges the crease (creasePoint).
         if (!m.isConstrained(t, i) && !singular_[v[a]] && !singular_[v[b]] &&
             normal_[v[a]].Dot(normal_[v[b]]) < angleSplit.minCos &&
-            creaseBetween(c.u[a], c.w[a], c.u[b], c.w[b]))
+            bendBetween(c.u[a], c.w[a], c.u[b], c.w[b]))
           r.flags |= TriangleRecord::kAcrossCrease;
         continue;
       }
@@ -1328,10 +1328,10 @@ void FaceMesher::ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& 
   }
 }
 
-bool FaceMesher::creaseBetween(double ua, double va, double ub, double vb) const {
+bool FaceMesher::bendBetween(double ua, double va, double ub, double vb) const {
   double line = 0;
-  return eval_.c0CreaseBetween(true, std::min(ua, ub), std::max(ua, ub), line) ||
-         eval_.c0CreaseBetween(false, std::min(va, vb), std::max(va, vb), line);
+  return eval_.bendBetween(true, std::min(ua, ub), std::max(ua, ub), line) ||
+         eval_.bendBetween(false, std::min(va, vb), std::max(va, vb), line);
 }
 
 bool FaceMesher::creasePoint(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const {
@@ -1346,7 +1346,7 @@ bool FaceMesher::creasePoint(cet::TriangleId t, const FaceMesh& mesh, double& u,
     for (const bool uDir : {true, false}) {
       const double xa = uDir ? c.u[a] : c.w[a], xb = uDir ? c.u[b] : c.w[b];
       double line = 0;
-      if (!eval_.c0CreaseBetween(uDir, std::min(xa, xb), std::max(xa, xb), line)) continue;
+      if (!eval_.bendBetween(uDir, std::min(xa, xb), std::max(xa, xb), line)) continue;
       // The line is straight in the scaled plane (each direction scales on its own), as the edge is.
       const cet::Point2 qa = cdt_->point(c.v[a]), qb = cdt_->point(c.v[b]);
       const cet::Point2 ql = scaled(uDir ? line : c.u[a], uDir ? c.w[a] : line);

@@ -246,7 +246,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
     keepTurningBreaks(true, uCreases_);
     keepTurningBreaks(false, vCreases_);
   } catch (const Standard_Failure&) {
-    uCreases_.clear(), vCreases_.clear();
+    uCreases_.clear(), vCreases_.clear(), uBends_.clear(), vBends_.clear();
   }
   if (chordal > 0 && angleRad > 0) {
     // Knots the mesher must take for creases: the band the normal turns in is narrower than its
@@ -436,7 +436,7 @@ void SurfaceEval::buildConformalSphereAxes() {
   vAxis_ = merc;
 }
 
-void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) const {
+void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) {
   const double lo = uDir ? su0_ : sv0_, hi = uDir ? su1_ : sv1_;
   const double a0 = uDir ? vMin : uMin, a1 = uDir ? vMax : uMax;  // along the line
   const double cosTurn = std::cos(kCreaseTurnRad);
@@ -472,10 +472,12 @@ void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) cons
     if (!(gap > 0) || gap == std::numeric_limits<double>::max()) gap = std::max(hi - lo, 1.0);
     const double step =
         std::max(1e-6 * gap, 16 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(c)));
-    bool turns = false;
-    for (std::size_t k = 0; k < along.size() && !turns; ++k) {
+    bool turns = false, folds = false;
+    int measured = 0;  // samples with a normal on both sides
+    for (std::size_t k = 0; k < along.size() && !folds; ++k) {
       const double a = along[k];
       gp_Vec n[2];
+      bool normals = true;
       for (int side = 0; side < 2; ++side) {
         gp_Pnt p;
         gp_Vec du, dv;
@@ -490,12 +492,19 @@ void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) cons
           surface_.D1(uDir ? t : u, uDir ? v : t, p, du, dv);
         }
         n[side] = du.Crossed(dv);
+        // No normal, or one that is rounding noise (Su and Sv nearly parallel: a pole, a collapsed part).
+        const double m = n[side].Magnitude();
+        normals = normals && std::isfinite(m) && m > kNoNormalSine * du.Magnitude() * dv.Magnitude();
       }
-      const double m0 = n[0].Magnitude(), m1 = n[1].Magnitude();
-      if (!(m0 > 0) || !(m1 > 0) || !std::isfinite(m0) || !std::isfinite(m1)) continue;  // a pole: no normal
-      turns = n[0].Dot(n[1]) < cosTurn * m0 * m1;
+      if (!normals) continue;
+      ++measured;
+      const double dot = n[0].Dot(n[1]), norms = n[0].Magnitude() * n[1].Magnitude();
+      turns = turns || dot < cosTurn * norms;
+      folds = dot < kFoldingCreaseCos * norms;
     }
-    if (turns) kept.push_back(c);
+    // A line with no normal at any sample (the surface collapsed all along it) stays a crease.
+    if (turns || measured == 0) kept.push_back(c);
+    if (turns && !folds) (uDir ? uBends_ : vBends_).push_back(c);
   }
   breaks.swap(kept);
 }
@@ -540,23 +549,21 @@ bool SurfaceEval::sharpKnotBetween(bool uDir, double a, double b, double near, d
   return found;
 }
 
-bool SurfaceEval::c0CreaseBetween(bool uDir, double a, double b, double& line) const {
-  const std::vector<double>& creases = uDir ? uCreases_ : vCreases_;
-  const std::vector<double>& sharp = uDir ? uSharpKnots_ : vSharpKnots_;
+bool SurfaceEval::bendBetween(bool uDir, double a, double b, double& line) const {
+  const std::vector<double>& bends = uDir ? uBends_ : vBends_;
   const double period = uDir ? uPeriod_ : vPeriod_;
   const double band = 1e-9 * (uDir ? uMax - uMin : vMax - vMin);
-  if (creases.empty() || !(b - a > 2 * band)) return false;
-  // Shifts of the crease list by whole periods that can land between a and b.
+  if (bends.empty() || !(b - a > 2 * band)) return false;
+  // Shifts of the lines by whole periods that can land between a and b.
   double k0 = 0, k1 = 0;
   if (period > 0) {
-    k0 = std::floor((a - creases.back()) / period), k1 = std::ceil((b - creases.front()) / period);
+    k0 = std::floor((a - bends.back()) / period), k1 = std::ceil((b - bends.front()) / period);
     if (k1 - k0 > 4) return false;  // wider than the period: no one crossing
   }
   for (double k = k0; k <= k1; ++k) {
     const double shift = k * period;
-    for (auto it = std::upper_bound(creases.begin(), creases.end(), a + band - shift);
-         it != creases.end() && *it + shift < b - band; ++it) {
-      if (std::binary_search(sharp.begin(), sharp.end(), *it)) continue;
+    const auto it = std::upper_bound(bends.begin(), bends.end(), a + band - shift);
+    if (it != bends.end() && *it + shift < b - band) {
       line = *it + shift;
       return true;
     }

@@ -147,10 +147,11 @@ class SurfaceEval {
   // narrower than any split) strictly between a and b (in u when uDir, else v; a < b), the one
   // nearest `near`; false when there is none.
   bool sharpKnotBetween(bool uDir, double a, double b, double near, double& knot) const;
-  // A crease line that is not a sharp knot (the surface is not C1 there and its normal turns: a
-  // knot of full multiplicity, a C0 seam) strictly between a and b (in u when uDir, else v; a <
-  // b; off both by more than onCrease's band), in the period that holds a and b; false when none.
-  bool c0CreaseBetween(bool uDir, double a, double b, double& line) const;
+  // A bend (a crease line found by keepTurningBreaks where the normal turns by at most 120 degrees
+  // at every sample: a knot of full multiplicity, a C0 seam; not a sharp knot, a fold, or a line
+  // kept for want of a normal along it) strictly between a and b (in u when uDir, else v; a < b;
+  // off both by more than onCrease's band), in the period that holds a and b; false when none.
+  bool bendBetween(bool uDir, double a, double b, double& line) const;
   // True when the unit normal jumps on the UV segment from (ua, va) to (ub, vb), whose ends' normals
   // na and nb oppose (a negative dot product): bisecting towards the half that turns further, the
   // turn stays above 90 degrees down to 2^-kJumpBisections of the segment. A parametrisation that
@@ -259,15 +260,17 @@ class SurfaceEval {
   static constexpr double kSharpKnotSpeedRatio = 100;
   // Of a direction's C1 breaks (`breaks`, increasing), keeps those where the normal turns across
   // the line by more than kCreaseTurnRad somewhere over the face's box (its limits from either
-  // side, at samples along the line). A break of the parametrisation alone (a knot of full
-  // multiplicity where the surface is tangent-continuous: the STEP and IGES B-splines pieced from
-  // Bezier patches) is no crease: the normal is continuous there, and the angle test must hold
-  // across it (taken for creases, hammer's, linkrods' and r0901's knot lines were exempt from it,
-  // and triangles spanned them with corner normals up to 40 degrees apart).
+  // side, at samples along the line; a line with no normal at any sample stays a crease). A break of the
+  // parametrisation alone (a knot of full multiplicity where the surface is tangent-continuous: the STEP and
+  // IGES B-splines pieced from Bezier patches) is no crease: the normal is continuous there, and the angle
+  // test must hold across it (taken for creases, hammer's, linkrods' and r0901's knot lines were exempt from
+  // it, and triangles spanned them with corner normals up to 40 degrees apart).
   static constexpr double kCreaseTurnRad = 0.5 * M_PI / 180;
   static constexpr int kCreaseSamples = 17;
   static constexpr std::size_t kCreaseSampleBudget = 20000;
-  void keepTurningBreaks(bool uDir, std::vector<double>& breaks) const;
+  static constexpr double kNoNormalSine = 1e-6;      // |Su x Sv| below this share of |Su| |Sv|: no normal
+  static constexpr double kFoldingCreaseCos = -0.5;  // a turn past 120 degrees: the sheet folds back
+  void keepTurningBreaks(bool uDir, std::vector<double>& breaks);
   void findSharpKnots(bool uDir, const Axis& axis, double reach, double angleRad, std::vector<double>& out) const;
   // A sphere's scaled UV is conformal: x = r u and y = r ln tan(pi/4 + v/2) (Mercator), piecewise
   // linear in spans of latitude across the face (the scale changing by kConformalSpanChange at most
@@ -308,6 +311,7 @@ class SurfaceEval {
   double gridArea_ = 0;
   std::vector<double> uCreases_, vCreases_;        // parameters of the crease lines, increasing
   std::vector<double> uSharpKnots_, vSharpKnots_;  // those of them that are sharp knots, increasing
+  std::vector<double> uBends_, vBends_;            // those of them that are bends (bendBetween), increasing
   double uPeriod_ = 0, vPeriod_ = 0;               // 0 unless periodic: creases repeat with it
 };
 

@@ -38,8 +38,8 @@ struct TriangleRecord {
       32;  // unmeasured, but its angle split was dropped: measure it
   // A free edge between regular corners crosses a fold of the parametrisation (FaceMesher::foldPoint).
   static constexpr std::uint8_t kAcrossFold = 64;
-  // A free edge between regular corners crosses a crease (SurfaceEval::c0CreaseBetween) and its ends'
-  // normals differ by more than the angle: the triangle bridges the crease (FaceMesher::creasePoint).
+  // A free edge between regular corners crosses a bend of the surface (SurfaceEval::bendBetween) and
+  // its ends' normals differ by more than the angle: the triangle bridges it (FaceMesher::creasePoint).
   static constexpr std::uint8_t kAcrossCrease = 128;
 
   bool matches(cet::VertexId a, cet::VertexId b, cet::VertexId c) const {
