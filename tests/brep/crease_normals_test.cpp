@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <utility>
@@ -69,6 +71,25 @@ int expectCornersShowTheirSidesNormal(const Tessellator& t, const Handle(Geom_Su
     }
   }
   return checked;
+}
+
+// Tessellates a rectangle across the bend of the sheet rolled by 3 (bentSheet(farRow, 3)) at 1% and
+// 0.1% for each far row, and hands each run to `check` (in a trace naming the sheet and deflection).
+void forEachRolledSheet(
+    std::initializer_list<gp_Pnt> farRows,
+    const std::function<void(const Tessellator&, const Handle(Geom_BSplineSurface) &)>& check) {
+  for (const gp_Pnt& farRow : farRows) {
+    const Handle(Geom_BSplineSurface) surface = bentSheet(farRow, 3);
+    const TopoDS_Face face = test::uvPolygonFace(surface, {{0, 0}, {2, 0}, {2, 1}, {0, 1}});
+    auto model = test::loadShape(face, "face_across_a_crease");
+    ASSERT_TRUE(model);
+    for (double d : {0.01, 0.001}) {
+      SCOPED_TRACE("far row z " + std::to_string(farRow.Z()) + ", at " + std::to_string(d * 100) + "%");
+      auto t = test::tessellate(*model, test::relative(d));
+      ASSERT_TRUE(t);
+      check(*t, surface);
+    }
+  }
 }
 
 // An L-shaped face on the bent sheet: all of the first span and the upper half of the second. Its
@@ -140,26 +161,18 @@ TEST(CreaseNormals, SidesAlongAndOntoTheBendOfFlatPlatesAreNotSplit) {
 // FaceMesher::showCreaseCorners). Without the twins, 141 checks of corners and facing fail, and
 // the twin count on every run.
 TEST(CreaseNormals, ACreaseThroughAFaceShowsBothSidesNormals) {
-  for (const gp_Pnt& farRow : {gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}) {
-    const Handle(Geom_BSplineSurface) surface = bentSheet(farRow, 3);
-    const TopoDS_Face face = test::uvPolygonFace(surface, {{0, 0}, {2, 0}, {2, 1}, {0, 1}});
-    auto model = test::loadShape(face, "face_across_a_crease");
-    ASSERT_TRUE(model);
-    for (double d : {0.01, 0.001}) {
-      SCOPED_TRACE("far row z " + std::to_string(farRow.Z()) + ", at " + std::to_string(d * 100) + "%");
-      auto t = test::tessellate(*model, test::relative(d));
-      ASSERT_TRUE(t);
-      EXPECT_GT(expectCornersShowTheirSidesNormal(*t, surface), 0);
-      // The crease's vertices come twice (one per side): some point on it appears with two normals.
-      const FaceMesh& m = t->faceMesh(0);
-      std::map<std::pair<double, double>, int> onCrease;
-      for (std::size_t i = 0; 2 * i < m.uv.size(); ++i)
-        if (std::abs(m.uv[2 * i] - 1) < 1e-9) ++onCrease[{m.uv[2 * i], m.uv[2 * i + 1]}];
-      int twinned = 0;
-      for (const auto& [uv, count] : onCrease) twinned += count > 1;
-      EXPECT_GT(twinned, 0);
-    }
-  }
+  const auto check = [](const Tessellator& t, const Handle(Geom_BSplineSurface) & surface) {
+    EXPECT_GT(expectCornersShowTheirSidesNormal(t, surface), 0);
+    // The crease's vertices come twice (one per side): some point on it appears with two normals.
+    const FaceMesh& m = t.faceMesh(0);
+    std::map<std::pair<double, double>, int> onCrease;
+    for (std::size_t i = 0; 2 * i < m.uv.size(); ++i)
+      if (std::abs(m.uv[2 * i] - 1) < 1e-9) ++onCrease[{m.uv[2 * i], m.uv[2 * i + 1]}];
+    int twinned = 0;
+    for (const auto& [uv, count] : onCrease) twinned += count > 1;
+    EXPECT_GT(twinned, 0);
+  };
+  forEachRolledSheet({gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}, check);
 }
 
 // The rolled bracket, and a sheet rolled the same way but bent by 58 degrees: no triangle on any
@@ -170,40 +183,32 @@ TEST(CreaseNormals, ACreaseThroughAFaceShowsBothSidesNormals) {
 // bracket's 462 triangles at 0.1% bridged it; 9 level checks fail without the split. (Not on a
 // fold: the sheet folded back still has 35 of its 272 triangles across the fold, 4 flipped.)
 TEST(CreaseNormals, NoTriangleBridgesABend) {
-  for (const gp_Pnt& farRow : {gp_Pnt(10, 0, 10), gp_Pnt(15, 0, 8)}) {  // bent by 90 and 58 degrees
-    const Handle(Geom_BSplineSurface) surface = bentSheet(farRow, 3);
-    const TopoDS_Face face = test::uvPolygonFace(surface, {{0, 0}, {2, 0}, {2, 1}, {0, 1}});
-    auto model = test::loadShape(face, "face_across_a_crease");
-    ASSERT_TRUE(model);
-    for (double d : {0.01, 0.001}) {
-      SCOPED_TRACE("far row z " + std::to_string(farRow.Z()) + ", at " + std::to_string(d * 100) + "%");
-      auto t = test::tessellate(*model, test::relative(d));
-      ASSERT_TRUE(t);
-      const FaceMesh& m = t->faceMesh(0);
-      ASSERT_EQ(m.levels.size(), t->schedule().size());
-      for (std::size_t k = 0; k < m.levels.size(); ++k) {
-        const std::vector<std::uint32_t>& idx = m.levels[k];
-        int bridging = 0, onBothSides = 0;
-        for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
-          bool below = false, above = false;
-          for (int c = 0; c < 3; ++c) {
-            const double u = m.uv[2 * idx[i + c]];
-            below = below || u < 1 - 1e-9, above = above || u > 1 + 1e-9;
-          }
-          if (!below || !above) continue;
-          ++onBothSides;
-          double minCos = 1;
-          for (int a = 0; a < 3; ++a) {
-            const float* na = &m.normals[3 * idx[i + a]];
-            const float* nb = &m.normals[3 * idx[i + (a + 1) % 3]];
-            minCos = std::min(minCos, double(na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2]));
-          }
-          bridging += minCos < std::cos(t->schedule()[k].angleRad);
+  const auto check = [](const Tessellator& t, const Handle(Geom_BSplineSurface)&) {
+    const FaceMesh& m = t.faceMesh(0);
+    ASSERT_EQ(m.levels.size(), t.schedule().size());
+    for (std::size_t k = 0; k < m.levels.size(); ++k) {
+      const std::vector<std::uint32_t>& idx = m.levels[k];
+      int bridging = 0, onBothSides = 0;
+      for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
+        bool below = false, above = false;
+        for (int c = 0; c < 3; ++c) {
+          const double u = m.uv[2 * idx[i + c]];
+          below = below || u < 1 - 1e-9, above = above || u > 1 + 1e-9;
         }
-        EXPECT_EQ(bridging, 0) << "level " << k << " (" << onBothSides << " with corners on both sides)";
+        if (!below || !above) continue;
+        ++onBothSides;
+        double minCos = 1;
+        for (int a = 0; a < 3; ++a) {
+          const float* na = &m.normals[3 * idx[i + a]];
+          const float* nb = &m.normals[3 * idx[i + (a + 1) % 3]];
+          minCos = std::min(minCos, double(na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2]));
+        }
+        bridging += minCos < std::cos(t.schedule()[k].angleRad);
       }
+      EXPECT_EQ(bridging, 0) << "level " << k << " (" << onBothSides << " with corners on both sides)";
     }
-  }
+  };
+  forEachRolledSheet({gp_Pnt(10, 0, 10), gp_Pnt(15, 0, 8)}, check);  // bent by 90 and 58 degrees
 }
 
 }  // namespace
