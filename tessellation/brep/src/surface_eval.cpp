@@ -472,11 +472,12 @@ void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) {
     if (!(gap > 0) || gap == std::numeric_limits<double>::max()) gap = std::max(hi - lo, 1.0);
     const double step =
         std::max(1e-6 * gap, 16 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(c)));
-    bool turns = false, folds = false;
+    bool turns = false, folds = false, jumps = false;
     int measured = 0;  // samples with a normal on both sides
     for (std::size_t k = 0; k < along.size() && !folds; ++k) {
       const double a = along[k];
       gp_Vec n[2];
+      double speed[2] = {0, 0};  // across the line
       bool normals = true;
       for (int side = 0; side < 2; ++side) {
         gp_Pnt p;
@@ -492,18 +493,23 @@ void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) {
           surface_.D1(uDir ? t : u, uDir ? v : t, p, du, dv);
         }
         n[side] = du.Crossed(dv);
+        speed[side] = (uDir ? du : dv).Magnitude();
         // No normal, or one that is rounding noise (Su and Sv nearly parallel: a pole, a collapsed part).
         const double m = n[side].Magnitude();
         normals = normals && std::isfinite(m) && m > kNoNormalSine * du.Magnitude() * dv.Magnitude();
       }
       if (!normals) continue;
       ++measured;
+      jumps = jumps || std::max(speed[0], speed[1]) > kSharpKnotSpeedRatio * std::min(speed[0], speed[1]);
       const double dot = n[0].Dot(n[1]), norms = n[0].Magnitude() * n[1].Magnitude();
       turns = turns || dot < cosTurn * norms;
       folds = dot < kFoldingCreaseCos * norms;
     }
-    // A line with no normal at any sample (the surface collapsed all along it) stays a crease.
-    if (turns || measured == 0) kept.push_back(c);
+    // A line with no normal at any sample (the surface collapsed all along it) stays a crease, and
+    // so does one where the speed across it jumps by kSharpKnotSpeedRatio or more (a fuzzed sheet
+    // whose speed across two knots 1.6e-7 apart falls from 13000 to 0.009: its triangles across them
+    // flipped and their splits cascaded, 17798 -> 506558 triangles, when those were no creases).
+    if (turns || jumps || measured == 0) kept.push_back(c);
     if (turns && !folds) (uDir ? uBends_ : vBends_).push_back(c);
   }
   breaks.swap(kept);
