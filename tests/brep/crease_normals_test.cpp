@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -73,15 +74,19 @@ int expectCornersShowTheirSidesNormal(const Tessellator& t, const Handle(Geom_Su
   return checked;
 }
 
-// Tessellates a rectangle across the bend of the sheet rolled by 3 (bentSheet(farRow, 3)) at 1% and
-// 0.1% for each far row, and hands each run to `check` (in a trace naming the sheet and deflection).
-void forEachRolledSheet(
-    std::initializer_list<gp_Pnt> farRows,
+// The L-shaped face below (all of the first span, the upper half of the second) and a rectangle
+// across the bend, in the sheet's (u, v).
+const std::vector<gp_Pnt2d> kLFace = {{0, 0}, {1, 0}, {1, 0.5}, {2, 0.5}, {2, 1}, {0, 1}};
+const std::vector<gp_Pnt2d> kAcrossTheBend = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+
+// Tessellates the face with `corners` on bentSheet(farRow, roll) at 1% and 0.1% for each far row,
+// and hands each run to `check` (in a trace naming the sheet and deflection).
+void forEachSheetFace(
+    std::initializer_list<gp_Pnt> farRows, double roll, const std::vector<gp_Pnt2d>& corners,
     const std::function<void(const Tessellator&, const Handle(Geom_BSplineSurface) &)>& check) {
   for (const gp_Pnt& farRow : farRows) {
-    const Handle(Geom_BSplineSurface) surface = bentSheet(farRow, 3);
-    const TopoDS_Face face = test::uvPolygonFace(surface, {{0, 0}, {2, 0}, {2, 1}, {0, 1}});
-    auto model = test::loadShape(face, "face_across_a_crease");
+    const Handle(Geom_BSplineSurface) surface = bentSheet(farRow, roll);
+    auto model = test::loadShape(test::uvPolygonFace(surface, corners), "face_on_a_bent_sheet");
     ASSERT_TRUE(model);
     for (double d : {0.01, 0.001}) {
       SCOPED_TRACE("far row z " + std::to_string(farRow.Z()) + ", at " + std::to_string(d * 100) + "%");
@@ -106,7 +111,7 @@ TEST(CreaseNormals, AFaceAlongACreaseShowsItsOwnSidesNormals) {
     for (const bool reversed : {false, true}) {
       SCOPED_TRACE(std::string(sheet.name) + (reversed ? ", face reversed" : ""));
       const Handle(Geom_BSplineSurface) surface = bentSheet(sheet.farRow);
-      TopoDS_Face face = test::uvPolygonFace(surface, {{0, 0}, {1, 0}, {1, 0.5}, {2, 0.5}, {2, 1}, {0, 1}});
+      TopoDS_Face face = test::uvPolygonFace(surface, kLFace);
       if (reversed) face.Reverse();
       auto model = test::loadShape(face, "l_face_on_a_crease");
       ASSERT_TRUE(model);
@@ -128,31 +133,22 @@ TEST(CreaseNormals, AFaceAlongACreaseShowsItsOwnSidesNormals) {
 // points at 0.1%, 4139 triangles for two flat plates); the side ending there was halved towards
 // that end down to the minimum size.
 TEST(CreaseNormals, SidesAlongAndOntoTheBendOfFlatPlatesAreNotSplit) {
-  for (const gp_Pnt& farRow : {gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}) {
-    const Handle(Geom_BSplineSurface) surface = bentSheet(farRow);
-    const TopoDS_Face face =
-        test::uvPolygonFace(surface, {{0, 0}, {1, 0}, {1, 0.5}, {2, 0.5}, {2, 1}, {0, 1}});
-    auto model = test::loadShape(face, "l_face_sides_on_a_crease");
-    ASSERT_TRUE(model);
-    for (double d : {0.01, 0.001}) {
-      SCOPED_TRACE("far row z " + std::to_string(farRow.Z()) + ", at " + std::to_string(d * 100) + "%");
-      auto t = test::tessellate(*model, test::relative(d));
-      ASSERT_TRUE(t);
-      const FaceMesh& m = t->faceMesh(0);
-      ASSERT_FALSE(m.levels.empty());
-      for (std::size_t k = 0; k < m.levels.size(); ++k) {
-        int alongTheBend = 0, ontoTheBend = 0;
-        for (const std::uint32_t i : m.levels[k]) {
-          const double u = m.uv[2 * i], v = m.uv[2 * i + 1];
-          alongTheBend += std::abs(u - 1) < 1e-9 && v > 1e-9 && v < 0.5 - 1e-9;
-          ontoTheBend += std::abs(v) < 1e-9 && u > 1e-9 && u < 1 - 1e-9;
-        }
-        // (counted once per triangle corner)
-        EXPECT_EQ(alongTheBend, 0) << "level " << k;
-        EXPECT_EQ(ontoTheBend, 0) << "level " << k;
+  const auto check = [](const Tessellator& t, const Handle(Geom_BSplineSurface)&) {
+    const FaceMesh& m = t.faceMesh(0);
+    ASSERT_FALSE(m.levels.empty());
+    for (std::size_t k = 0; k < m.levels.size(); ++k) {
+      int alongTheBend = 0, ontoTheBend = 0;
+      for (const std::uint32_t i : m.levels[k]) {
+        const double u = m.uv[2 * i], v = m.uv[2 * i + 1];
+        alongTheBend += std::abs(u - 1) < 1e-9 && v > 1e-9 && v < 0.5 - 1e-9;
+        ontoTheBend += std::abs(v) < 1e-9 && u > 1e-9 && u < 1 - 1e-9;
       }
+      // (counted once per triangle corner)
+      EXPECT_EQ(alongTheBend, 0) << "level " << k;
+      EXPECT_EQ(ontoTheBend, 0) << "level " << k;
     }
-  }
+  };
+  forEachSheetFace({gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}, 0, kLFace, check);
 }
 
 // A face across the bend of a sheet rolled along it (curved on both sides, so refined there): the
@@ -172,7 +168,7 @@ TEST(CreaseNormals, ACreaseThroughAFaceShowsBothSidesNormals) {
     for (const auto& [uv, count] : onCrease) twinned += count > 1;
     EXPECT_GT(twinned, 0);
   };
-  forEachRolledSheet({gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}, check);
+  forEachSheetFace({gp_Pnt(10, 0, 10), gp_Pnt(0, 0, 1)}, 3, kAcrossTheBend, check);
 }
 
 // The rolled bracket, and a sheet rolled the same way but bent by 58 degrees: no triangle on any
@@ -208,7 +204,8 @@ TEST(CreaseNormals, NoTriangleBridgesABend) {
       EXPECT_EQ(bridging, 0) << "level " << k << " (" << onBothSides << " with corners on both sides)";
     }
   };
-  forEachRolledSheet({gp_Pnt(10, 0, 10), gp_Pnt(15, 0, 8)}, check);  // bent by 90 and 58 degrees
+  forEachSheetFace({gp_Pnt(10, 0, 10), gp_Pnt(15, 0, 8)}, 3, kAcrossTheBend,
+                   check);  // bent by 90 and 58 degrees
 }
 
 }  // namespace
