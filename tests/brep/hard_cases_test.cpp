@@ -25,6 +25,8 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <GeomAPI_Interpolate.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_ConicalSurface.hxx>
@@ -449,6 +451,28 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
     const std::size_t triangles = t->triangleCount(t->lastLevel());
     std::printf("%s: %zu triangles\n", strip.name, triangles);
     EXPECT_LE(triangles, strip.most);
+  }
+}
+
+// A narrow fillet along a long curved edge, as STEP files carry it: a quarter of a torus tube
+// (R = 20, r = 0.2 or 0.3: 90 degrees over 0.31 or 0.47) along 60 degrees of its ring, as a
+// rational B-spline. At 0.3 the ring's chords (5.1 long) sag 0.16-0.18 below the tube, more than
+// it rises where its normal has turned 20 degrees (0.07-0.10): every point that could split an
+// edge across the fillet lay inside a chord's clearance, and the last level kept 27.2 and 24.1
+// degrees. The edge is halved until the first row can stand on it (r0901's fillet, 20.55 degrees).
+TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
+  for (const double r : {0.2, 0.3}) {
+    SCOPED_TRACE("tube radius " + std::to_string(r));
+    Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), 20, r);
+    const Handle(Geom_BSplineSurface) fillet = GeomConvert::SurfaceToBSplineSurface(
+        new Geom_RectangularTrimmedSurface(torus, 0, M_PI / 3, 0, M_PI / 2));
+    ASSERT_FALSE(fillet.IsNull());
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    fillet->Bounds(u0, u1, v0, v1);
+    auto model =
+        test::loadShape(test::uvPolygonFace(fillet, {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}}), "fillet");
+    ASSERT_TRUE(model);
+    test::tessellateAndCheck(*model, test::absolute(0.3));
   }
 }
 

@@ -604,6 +604,44 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       }
       return true;
     };
+    // Whether face k's surface has a pole at uv: one of its derivatives vanishes beside the other.
+    auto atPole = [&](std::size_t k, const gp_Pnt2d& uv) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      d1(k, uv.X(), uv.Y(), p, du, dv);
+      return std::min(du.Magnitude(), dv.Magnitude()) <= 1e-9 * std::max(du.Magnitude(), dv.Magnitude());
+    };
+    // A face narrower than the tall standing triangle (its far side nearer the chord than half the
+    // chord's length) that turns across its width beyond the angle: the face mesher's first row of
+    // points must stand within the angle of the chord, where the normal has turned by the angle at
+    // most (a fraction 1/spread of the way across, the turn taken as even), and a point that near
+    // must make a facet with the chord that faces the surface's way (FaceMesher::clearOfChords:
+    // inside a chord's clearance, within kStandingFacetCos). Where the chord sags more than the
+    // face rises over that row, none can: returns how far the far side misses the angle, else 0.
+    // r0901's fillet (90 degrees over 0.7 in width) along a chord 4.6 long sagging 0.15 at 0.1%:
+    // every point splitting an edge of 20.5 degrees lay inside the chord's clearance.
+    auto narrowMiss = [&](std::size_t k, const UvChord& c, const gp_Pnt& pa, const gp_Pnt& pb, int side,
+                          const gp_Vec& na, const gp_Vec& nb, auto&& spreadAt) {
+      // Not on a chord to a pole: the face narrows to nothing there, where a fan stands on the
+      // pole rather than rows on the chord, and the normal at the pole is rounding noise (CrankArm's
+      // corner blends, pinched to a point: their edges were halved towards it, and a sliver by the
+      // pole flipped on two coarse levels).
+      if (atPole(k, c.a) || atPole(k, c.b)) return 0.0;
+      const Reach r = reachInto(k, c, side);
+      if (!r.inside) return 0.0;
+      gp_Pnt across, row;
+      const double spread = spreadAt(r.u, r.v, across);
+      if (spread <= 1.0) return 0.0;
+      double u = 0, v = 0;
+      offChord(k, c, 0.5, r.h / spread, side, u, v);
+      const gp_Vec nRow = normalAt(k, u, v, row);
+      const double ma = na.Magnitude(), mb = nb.Magnitude(), mRow = nRow.Magnitude();
+      const gp_Vec nChord = na / ma + nb / mb;
+      if (!(ma > 0 && mb > 0 && mRow > 0 && nChord.Magnitude() > 0)) return 0.0;
+      const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, row)) * side;
+      const gp_Vec nSum = 2 * nChord.Normalized() + nRow / mRow;
+      return facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude() ? 0.0 : spread;
+    };
     // The apex of a triangle standing on face k's UV chord c: above the point at fraction f of the
     // chord, height times its length away (side: which way), in the face's scaled UV. False
     // outside the face's parameter box.
@@ -664,8 +702,12 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
         double au = 0, av = 0;
         // Outside the face's parameter box the face is narrower than the triangle: its width, not
         // this segment, limits the triangles there (the lower ones too: a narrow fillet turns
-        // steadily across, and the edges on its far side set its rows).
-        if (!apexAt(k, c, 0.5, height, side, au, av)) break;
+        // steadily across, and the edges on its far side set its rows), as long as its first row
+        // can stand on the chord (narrowMiss).
+        if (!apexAt(k, c, 0.5, height, side, au, av)) {
+          if (height == kStandingHeight) return narrowMiss(k, c, pa, pb, side, na, nb, spreadAt);
+          break;
+        }
         gp_Pnt apex;
         const double spread = spreadAt(au, av, apex);
         if (height == kStandingHeight) {
