@@ -454,25 +454,30 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
   }
 }
 
-// A narrow fillet along a long curved edge, as STEP files carry it: a quarter of a torus tube
-// (R = 20, r = 0.2 or 0.3: 90 degrees over 0.31 or 0.47) along 60 degrees of its ring, as a
-// rational B-spline. At 0.3 the ring's chords (5.1 long) sag 0.16-0.18 below the tube, more than
-// it rises where its normal has turned 20 degrees (0.07-0.10): every point that could split an
-// edge across the fillet lay inside a chord's clearance, and the last level kept 27.2 and 24.1
-// degrees. The edge is halved until the first row can stand on it (r0901's fillet, 20.55 degrees).
+// Narrow fillets along long curved edges, as STEP files carry them: quarters and eighths of a
+// torus tube (R = 20) along 60 degrees of its ring, as rational B-splines. The ring's chords (5.1
+// long at 0.3) sag 0.16-0.18 below the tube, more than it rises where its normal has turned 20
+// degrees: every point that could split an edge across the fillet lay inside a chord's clearance,
+// and the last levels kept 27.2 and 24.1 degrees on the outer quarters at 0.3, 25.0 on the inner
+// eighth at 0.2 (22.7 with the row point tested where the normal has turned by the whole angle).
+// The edge is halved until the fillet's first row can stand on it (r0901's fillet, 20.55 degrees).
 TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
-  for (const double r : {0.2, 0.3}) {
-    SCOPED_TRACE("tube radius " + std::to_string(r));
-    Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), 20, r);
-    const Handle(Geom_BSplineSurface) fillet = GeomConvert::SurfaceToBSplineSurface(
-        new Geom_RectangularTrimmedSurface(torus, 0, M_PI / 3, 0, M_PI / 2));
+  struct Fillet {
+    double r, from, turn, deflection;  // tube radius, tube angles (degrees), absolute deflection
+  };
+  for (const Fillet& f : {Fillet{0.2, 0, 90, 0.3}, Fillet{0.3, 0, 90, 0.3}, Fillet{0.15, 180, 45, 0.2}}) {
+    SCOPED_TRACE("tube radius " + std::to_string(f.r) + " from " + std::to_string(f.from));
+    Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), 20, f.r);
+    const double v0 = f.from * M_PI / 180, v1 = (f.from + f.turn) * M_PI / 180;
+    const Handle(Geom_BSplineSurface) fillet =
+        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(torus, 0, M_PI / 3, v0, v1));
     ASSERT_FALSE(fillet.IsNull());
-    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-    fillet->Bounds(u0, u1, v0, v1);
+    double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
+    fillet->Bounds(a0, a1, b0, b1);
     auto model =
-        test::loadShape(test::uvPolygonFace(fillet, {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}}), "fillet");
+        test::loadShape(test::uvPolygonFace(fillet, {{a0, b0}, {a1, b0}, {a1, b1}, {a0, b1}}), "fillet");
     ASSERT_TRUE(model);
-    test::tessellateAndCheck(*model, test::absolute(0.3));
+    test::tessellateAndCheck(*model, test::absolute(f.deflection));
   }
 }
 

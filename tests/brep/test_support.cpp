@@ -127,12 +127,9 @@ std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshPa
       // their own, larger, chordal tolerance unsplit), for every face CET meshed.
       const FaceStatus status = t.report(f).status;
       if (k == t.lastLevel() && (status == FaceStatus::kOk || status == FaceStatus::kRepaired)) {
-        if (listed(options.knownAngle) && q.maxCornerAngle > t.angleRad()) {
-          std::printf("known issue: face %u (%s) turns %.1f degrees across an edge\n", f, kind, q.maxCornerAngle * 180 / M_PI);
-        } else {
-          EXPECT_LE(q.maxCornerAngle, t.angleRad() * (1 + 1e-4))
-              << "face " << f << " (" << kind << ") turns " << q.maxCornerAngle * 180 / M_PI << " degrees across an edge";
-        }
+        EXPECT_LE(q.maxCornerAngle, t.angleRad() * (1 + 1e-4))
+            << "face " << f << " (" << kind << ") turns " << q.maxCornerAngle * 180 / M_PI
+            << " degrees across an edge";
       }
       const bool known = listed(options.knownFlips) || (k < t.lastLevel() && listed(options.knownCoarseFlips));
       if (known && q.flipped > 0) {

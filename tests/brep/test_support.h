@@ -34,8 +34,6 @@ struct CheckOptions {
   // model test for which and why.
   std::vector<FaceId> knownFlips;
   std::vector<FaceId> knownCoarseFlips;  // the same on every level but the last, which must be clean
-  // Faces whose final level exceeds the angular deflection: a known open issue (reported, not failed).
-  std::vector<FaceId> knownAngle;
   bool everyLevel = true;        // check each level against its own tolerance, not only the final one
 };
 
