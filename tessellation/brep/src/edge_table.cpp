@@ -642,8 +642,9 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       offChord(k, c, 0.5, r.h * std::min(1 / spread, 1.6 / std::exp2(halvings)), side, u, v);
       const gp_Vec nRow = normalAt(k, u, v, row);
       const double ma = na.Magnitude(), mb = nb.Magnitude(), mRow = nRow.Magnitude();
+      if (!(ma > 0 && mb > 0 && mRow > 0)) return 0.0;
       const gp_Vec nChord = na / ma + nb / mb;
-      if (!(ma > 0 && mb > 0 && mRow > 0 && nChord.Magnitude() > 0)) return 0.0;
+      if (!(nChord.Magnitude() > 0)) return 0.0;
       const gp_Vec facet = gp_Vec(pa, pb).Crossed(gp_Vec(pa, row)) * side;
       const gp_Vec nSum = 2 * nChord.Normalized() + nRow / mRow;
       return facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude() ? 0.0 : spread;
