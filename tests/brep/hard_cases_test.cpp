@@ -455,19 +455,27 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
 }
 
 // Narrow fillets along long curved edges, as STEP files carry them: quarters and eighths of a
-// torus tube (R = 20) along 60 degrees of its ring, as rational B-splines. The ring's chords (5.1
-// long at 0.3) sag 0.16-0.18 below the tube, more than it rises where its normal has turned 20
-// degrees: every point that could split an edge across the fillet lay inside a chord's clearance,
-// and the last levels kept 27.2 and 24.1 degrees on the outer quarters at 0.3, 25.0 on the inner
-// eighth at 0.2 (22.7 with the row point tested where the normal has turned by the whole angle).
-// The edge is halved until the fillet's first row can stand on it (r0901's fillet, 20.55 degrees).
+// torus tube along 60 degrees of its ring, as rational B-splines. The ring's chords (5.1 long at
+// 0.3 on a ring of 20) sag 0.16-0.18 below the tube, more than it rises where its normal has turned
+// 20 degrees: every point that could split an edge across the fillet lay inside a chord's
+// clearance, and the last levels kept 27.2 and 24.1 degrees on the outer quarters at 0.3, 25.0 on
+// the inner eighth at 0.2 (22.7 with the row point tested where the normal has turned by the whole
+// angle). The edge is halved until the fillet's first row can stand on it (r0901's fillet, 20.55
+// degrees). Two more: an inner eighth on a ring of 10, whose first row stood within the angle of
+// the chord's middle but not of its ends (its edges from a chord's end to the row point beside the
+// next kept 20.09 degrees), and an outer eighth at 0.2 whose splits lay just past a chord's end,
+// refused by that chord's clearance (27.09 degrees).
 TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   struct Fillet {
-    double r, from, turn, deflection;  // tube radius, tube angles (degrees), absolute deflection
+    // ring and tube radii, tube angles (degrees), absolute deflection
+    double ring, r, from, turn, deflection;
   };
-  for (const Fillet& f : {Fillet{0.2, 0, 90, 0.3}, Fillet{0.3, 0, 90, 0.3}, Fillet{0.15, 180, 45, 0.2}}) {
-    SCOPED_TRACE("tube radius " + std::to_string(f.r) + " from " + std::to_string(f.from));
-    Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), 20, f.r);
+  for (const Fillet& f :
+       {Fillet{20, 0.2, 0, 90, 0.3}, Fillet{20, 0.3, 0, 90, 0.3}, Fillet{20, 0.15, 180, 45, 0.2},
+        Fillet{10, 0.15, 180, 45, 0.2}, Fillet{20, 0.15, 0, 45, 0.2}}) {
+    SCOPED_TRACE("ring " + std::to_string(f.ring) + " tube radius " + std::to_string(f.r) + " from " +
+                 std::to_string(f.from) + " turn " + std::to_string(f.turn));
+    Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), f.ring, f.r);
     const double v0 = f.from * M_PI / 180, v1 = (f.from + f.turn) * M_PI / 180;
     const Handle(Geom_BSplineSurface) fillet =
         GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(torus, 0, M_PI / 3, v0, v1));

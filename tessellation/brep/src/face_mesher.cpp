@@ -985,6 +985,13 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
   if (i < 0 || j < 0 || i >= gridNx_ || j >= gridNy_) return true;
   gp_Pnt x;
   bool evaluated = false;
+  // Past a chord's end, inside its clearance: refused unless another chord runs beside the point
+  // (its own clearance guards it there). A narrow fillet's splits towards a long chord's end lay
+  // just past it, beside the next chord along the same edge, and were all refused (a torus tube
+  // of 0.15 on a ring of 20 kept 27.09 degrees). Where no chord runs beside the point (by a
+  // corner of the boundary), every chord it overhangs keeps its clearance: with the side alone
+  // there, fuzzed faces gained and lost flipped triangles by the hundred.
+  bool besideOne = false, pastEndRefused = false;
   const std::size_t cell =
       static_cast<std::size_t>(j) * static_cast<std::size_t>(gridNx_) + static_cast<std::size_t>(i);
   for (std::uint32_t at = gridStart_[cell]; at < gridStart_[cell + 1]; ++at) {
@@ -1000,23 +1007,33 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
     // Near the chord, the whole clearance; further out (a pole's chord), only its side.
     const bool near = q.x >= std::min(c.pa.x, c.pb.x) - c.near && q.x <= std::max(c.pa.x, c.pb.x) + c.near &&
                       q.y >= std::min(c.pa.y, c.pb.y) - c.near && q.y <= std::max(c.pa.y, c.pb.y) + c.near;
-    if (facet.Dot(c.n) >= (near ? c.clearance * c.ab.Magnitude() : 0.0)) continue;
-    if (mayStand) {
-      // Inside the clearance, a point that fixes the angle (or a flipped triangle, sliding along the
-      // edge it is bisected on) may still stand on the chord if the facet it makes with it faces
-      // the surface's way within 60 degrees (the fold rule's 70, with a margin). Without it, edges
-      // from the boundary into tori and free-form faces kept up to 50 degrees on the sample models.
+    const bool alongside = s >= 0 && s <= 1;
+    besideOne = besideOne || (near && alongside);
+    // Inside the clearance, a point that fixes the angle (or a flipped triangle, sliding along the
+    // edge it is bisected on) may still stand on the chord if the facet it makes with it faces the
+    // surface's way within 60 degrees (the fold rule's 70, with a margin). Without it, edges from
+    // the boundary into tori and free-form faces kept up to 50 degrees on the sample models.
+    auto standsOn = [&] {
       gp_Pnt p;
       gp_Dir n;
-      if (eval_.pointNormal(u, v, p, n)) {
-        const gp_Vec nSum = 2 * c.n + gp_Vec(n);
-        if (facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude()) continue;
-      }
+      if (!mayStand || !eval_.pointNormal(u, v, p, n)) return false;
+      const gp_Vec nSum = 2 * c.n + gp_Vec(n);
+      return facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude();
+    };
+    const double distance = facet.Dot(c.n), clearance = c.clearance * c.ab.Magnitude();
+    if (distance >= (near && alongside ? clearance : 0.0)) {
+      if (near && !alongside && distance < clearance && !standsOn()) pastEndRefused = true;
+      continue;
     }
+    if (standsOn()) continue;
     if (settings_.trace) {
-      std::fprintf(stderr, "  not clear: chord length %g clearance %g distance %g at %g\n", c.ab.Magnitude(), c.clearance,
-                   facet.Dot(c.n) / c.ab.Magnitude(), s);
+      std::fprintf(stderr, "  not clear: chord length %g clearance %g distance %g at %g\n", c.ab.Magnitude(),
+                   c.clearance, distance / c.ab.Magnitude(), s);
     }
+    return false;
+  }
+  if (pastEndRefused && !besideOne) {
+    if (settings_.trace) std::fprintf(stderr, "  not clear: past a chord's end, inside its clearance\n");
     return false;
   }
   return true;
