@@ -461,10 +461,11 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
 // clearance, and the last levels kept 27.2 and 24.1 degrees on the outer quarters at 0.3, 25.0 on
 // the inner eighth at 0.2 (22.7 with the row point tested where the normal has turned by the whole
 // angle). The edge is halved until the fillet's first row can stand on it (r0901's fillet, 20.55
-// degrees). Two more: an inner eighth on a ring of 10, whose first row stood within the angle of
+// degrees). Three more: an inner eighth on a ring of 10, whose first row stood within the angle of
 // the chord's middle but not of its ends (its edges from a chord's end to the row point beside the
-// next kept 20.09 degrees), and an outer eighth at 0.2 whose splits lay just past a chord's end,
-// refused by that chord's clearance (27.09 degrees).
+// next kept 20.09 degrees), and outer eighths whose splits lay just past a chord's end, refused by
+// that chord's clearance (27.09 degrees on a ring of 20 at 0.2) or, on a ring of 40 at 0.4, by
+// lying behind the line of a chord whose edge curves on past its end (26.07).
 TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   struct Fillet {
     // ring and tube radii, tube angles (degrees), absolute deflection
@@ -472,7 +473,7 @@ TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   };
   for (const Fillet& f :
        {Fillet{20, 0.2, 0, 90, 0.3}, Fillet{20, 0.3, 0, 90, 0.3}, Fillet{20, 0.15, 180, 45, 0.2},
-        Fillet{10, 0.15, 180, 45, 0.2}, Fillet{20, 0.15, 0, 45, 0.2}}) {
+        Fillet{10, 0.15, 180, 45, 0.2}, Fillet{20, 0.15, 0, 45, 0.2}, Fillet{40, 0.15, 0, 45, 0.4}}) {
     SCOPED_TRACE("ring " + std::to_string(f.ring) + " tube radius " + std::to_string(f.r) + " from " +
                  std::to_string(f.from) + " turn " + std::to_string(f.turn));
     Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), f.ring, f.r);

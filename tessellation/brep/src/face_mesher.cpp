@@ -985,12 +985,13 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
   if (i < 0 || j < 0 || i >= gridNx_ || j >= gridNy_) return true;
   gp_Pnt x;
   bool evaluated = false;
-  // Past a chord's end, inside its clearance: refused unless another chord runs beside the point
-  // (its own clearance guards it there). A narrow fillet's splits towards a long chord's end lay
-  // just past it, beside the next chord along the same edge, and were all refused (a torus tube
-  // of 0.15 on a ring of 20 kept 27.09 degrees). Where no chord runs beside the point (by a
-  // corner of the boundary), every chord it overhangs keeps its clearance: with the side alone
-  // there, fuzzed faces gained and lost flipped triangles by the hundred.
+  // Past a chord's end, inside its clearance or behind its line: refused unless another chord runs
+  // beside the point (its own clearance guards it there). A narrow fillet's splits towards a long
+  // chord's end lay just past it, beside the next chord along the same edge, and were all refused
+  // (a torus tube of 0.15 on a ring of 20 kept 27.09 degrees; on a ring of 40, 26.07, the points
+  // behind the line of a chord whose edge curves on past its end). Where no chord runs beside the
+  // point (by a corner of the boundary), every chord it overhangs keeps its clearance: with the
+  // side alone there, fuzzed faces gained and lost flipped triangles by the hundred.
   bool besideOne = false, pastEndRefused = false;
   const std::size_t cell =
       static_cast<std::size_t>(j) * static_cast<std::size_t>(gridNx_) + static_cast<std::size_t>(i);
@@ -1020,11 +1021,12 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
       const gp_Vec nSum = 2 * c.n + gp_Vec(n);
       return facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude();
     };
-    const double distance = facet.Dot(c.n), clearance = c.clearance * c.ab.Magnitude();
-    if (distance >= (near && alongside ? clearance : 0.0)) {
-      if (near && !alongside && distance < clearance && !standsOn()) pastEndRefused = true;
+    const double distance = facet.Dot(c.n), need = near ? c.clearance * c.ab.Magnitude() : 0.0;
+    if (!alongside) {
+      if (distance < need && !standsOn()) pastEndRefused = true;
       continue;
     }
+    if (distance >= need) continue;
     if (standsOn()) continue;
     if (settings_.trace) {
       std::fprintf(stderr, "  not clear: chord length %g clearance %g distance %g at %g\n", c.ab.Magnitude(),
