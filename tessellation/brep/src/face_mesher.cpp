@@ -1035,7 +1035,7 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
     return false;
   }
   if (pastEndRefused && !besideOne) {
-    if (settings_.trace) std::fprintf(stderr, "  not clear: past a chord's end, inside its clearance\n");
+    if (settings_.trace) std::fprintf(stderr, "  not clear: past a chord's end, beside no chord\n");
     return false;
   }
   return true;
