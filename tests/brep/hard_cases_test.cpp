@@ -465,7 +465,10 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
 // the chord's middle but not of its ends (its edges from a chord's end to the row point beside the
 // next kept 20.09 degrees), and outer eighths whose splits lay just past a chord's end, refused by
 // that chord's clearance (27.09 degrees on a ring of 20 at 0.2) or, on a ring of 40 at 0.4, by
-// lying behind the line of a chord whose edge curves on past its end (26.07).
+// lying behind the line of a chord whose edge curves on past its end (26.07). Two more on the
+// tube's top at 0.4, whose first row the refinement put just past the angle from a chord's end
+// (20.08 degrees on the eighth, 21.03 on the quarter), every point between them behind the chord's
+// line: the split moves towards the chord's end until within the angle.
 TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   struct Fillet {
     // ring and tube radii, tube angles (degrees), absolute deflection
@@ -473,7 +476,8 @@ TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   };
   for (const Fillet& f :
        {Fillet{20, 0.2, 0, 90, 0.3}, Fillet{20, 0.3, 0, 90, 0.3}, Fillet{20, 0.15, 180, 45, 0.2},
-        Fillet{10, 0.15, 180, 45, 0.2}, Fillet{20, 0.15, 0, 45, 0.2}, Fillet{40, 0.15, 0, 45, 0.4}}) {
+        Fillet{10, 0.15, 180, 45, 0.2}, Fillet{20, 0.15, 0, 45, 0.2}, Fillet{40, 0.15, 0, 45, 0.4},
+        Fillet{20, 0.15, 90, 45, 0.4}, Fillet{20, 0.15, 90, 90, 0.4}}) {
     SCOPED_TRACE("ring " + std::to_string(f.ring) + " tube radius " + std::to_string(f.r) + " from " +
                  std::to_string(f.from) + " turn " + std::to_string(f.turn));
     Handle(Geom_Surface) torus = new Geom_ToroidalSurface(gp_Ax3(), f.ring, f.r);

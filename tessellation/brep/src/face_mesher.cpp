@@ -1125,6 +1125,70 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
   return false;
 }
 
+bool FaceMesher::touchesChord(cet::VertexId v) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  int around = 0;  // bounded: a vertex has a finite star
+  for (cet::TriangleId s = m.incident(v), first = s; s != cet::kNoTriangle && around < 4096; ++around) {
+    const int iv = m.indexOf(s, v);
+    for (int i = 0; i < 3; ++i)
+      if (i != iv && m.isConstrained(s, i)) return true;
+    s = m.nextAround(s, v);
+    if (s == first) break;
+  }
+  return false;
+}
+
+void FaceMesher::keepRowWithinAngleOfChord(cet::TriangleId t, int edge, const FaceMesh& mesh, double minCos,
+                                           double& u, double& v) const {
+  const cet::CetMesh& m = cdt_->mesh();
+  const cet::VertexId ends[2] = {m.vertex(t, (edge + 1) % 3), m.vertex(t, (edge + 2) % 3)};
+  gp_Pnt p;
+  gp_Dir n;
+  if (!eval_.pointNormal(u, v, p, n)) return;
+  const gp_Vec nSplit(n);
+  // The point at fraction f of the way from end e's vertex to (u, v).
+  const auto towards = [&](int e, double f, double& pu, double& pv) {
+    const std::size_t o = out(ends[e]);
+    const double w[2] = {1 - f, f}, eu[2] = {mesh.uv[2 * o], u}, ev[2] = {mesh.uv[2 * o + 1], v};
+    eval_.blend(2, w, eu, ev, pu, pv);
+  };
+  // The end on a boundary chord whose part of the edge would miss the angle and have no split
+  // point of its own (those safeSplit would try); none where both would (nothing to move to).
+  int stuck = -1;
+  for (int e = 0; e < 2; ++e) {
+    const cet::VertexId a = ends[e];
+    if (singular_[a] || isFold(a) || gp_Vec(normal_[a]).Dot(nSplit) >= minCos || !touchesChord(a)) continue;
+    bool splits = false;
+    for (double f : {0.5, 0.65, 0.35, 0.8, 0.2}) {
+      double pu = 0, pv = 0;
+      towards(e, f, pu, pv);
+      if ((splits = clearOfChords(pu, pv, true))) break;
+    }
+    if (splits) continue;
+    if (stuck >= 0) return;
+    stuck = e;
+  }
+  if (stuck < 0) return;
+  // The farthest point towards (u, v), at least halfway, within 0.95 of the angle of that end
+  // (its part of the edge then keeps the angle with a margin for the chord's other end).
+  const gp_Vec nEnd(normal_[ends[stuck]]);
+  const double target = std::cos(0.95 * std::acos(std::clamp(minCos, -1.0, 1.0)));
+  double within = 0, beyond = 1, pu = 0, pv = 0;
+  for (int i = 0; i < 12; ++i) {
+    const double f = 0.5 * (within + beyond);
+    towards(stuck, f, pu, pv);
+    (eval_.pointNormal(pu, pv, p, n) && nEnd.Dot(gp_Vec(n)) >= target ? within : beyond) = f;
+  }
+  if (within < 0.5) return;
+  towards(stuck, within, pu, pv);
+  if (!clearOfChords(pu, pv, true)) return;
+  if (settings_.trace)
+    std::fprintf(stderr,
+                 "  split moved to %.3f of the way from a boundary vertex: its part keeps the angle\n",
+                 within);
+  u = pu, v = pv;
+}
+
 bool FaceMesher::onChord(cet::TriangleId t) const {
   const cet::CetMesh& m = cdt_->mesh();
   return m.isConstrained(t, 0) || m.isConstrained(t, 1) || m.isConstrained(t, 2);
@@ -1193,19 +1257,8 @@ bool FaceMesher::alongChord(cet::TriangleId t) const {
       static_cast<std::size_t>(gj) * static_cast<std::size_t>(gridNx_) + static_cast<std::size_t>(gi);
   const double band = kAlongChordBand * longest;
   // A corner on the boundary elsewhere (the far side of a thin strip) makes no sliver along the chord.
-  const auto onBoundary = [&](cet::VertexId v) {
-    int around = 0;  // bounded: a vertex has a finite star
-    for (cet::TriangleId s = m.incident(v), first = s; s != cet::kNoTriangle && around < 4096; ++around) {
-      const int iv = m.indexOf(s, v);
-      for (int i = 0; i < 3; ++i)
-        if (i != iv && m.isConstrained(s, i)) return true;
-      s = m.nextAround(s, v);
-      if (s == first) break;
-    }
-    return false;
-  };
   bool boundary[3] = {false, false, false};
-  for (int i = 0; i < 3; ++i) boundary[i] = onBoundary(m.vertex(t, i));
+  for (int i = 0; i < 3; ++i) boundary[i] = touchesChord(m.vertex(t, i));
   for (std::uint32_t at = gridStart_[cell]; at < gridStart_[cell + 1]; ++at) {
     const Chord& c = chords_[gridChords_[at]];
     const double ex = c.pb.x - c.pa.x, ey = c.pb.y - c.pa.y, e2 = ex * ex + ey * ey;
@@ -1697,6 +1750,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         }
         continue;
       }
+      if (forAngle && safe && at > 0) keepRowWithinAngleOfChord(t, at - 1, mesh, angleSplit.minCos, u, v);
       if (settings_.trace) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, facet %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalCos, r->facetCos, r->longest, r->flags, u, v);

@@ -304,6 +304,16 @@ class FaceMesher {
   bool safeSplit(cet::TriangleId t, double& u, double& v, const FaceMesh& mesh, bool anyPoint, bool forAngle,
                  int angleEdge) const;
   void buildChords(const FaceMesh& mesh);
+  // Whether vertex v is an end of a boundary chord (a constrained edge in its star).
+  bool touchesChord(cet::VertexId v) const;
+  // An angle split (u, v) of triangle t's edge `edge` that lands past the angle (minCos) from an
+  // end on a boundary chord, where no point between them keeps the chords' clearance: that part of
+  // the edge could never be split again. Moves (u, v) towards that end until it keeps the angle, if
+  // the point there is clear. A narrow fillet under a long chord that sags below it (a torus tube
+  // of 0.15 on a ring of 20 at 0.4): the first row came 20.1 and 22 degrees across from the chord's
+  // ends, and every point between lay behind the chord's line in 3D (21.03 degrees kept).
+  void keepRowWithinAngleOfChord(cet::TriangleId t, int edge, const FaceMesh& mesh, double minCos, double& u,
+                                 double& v) const;
   // Whether (u, v) keeps every nearby chord's clearance. mayStand: within a clearance, also a point
   // whose facet on the chord would face the surface's way (the clearance is cautious: it guards
   // points that split for the chordal tolerance or a fold, which come back until they find room).
