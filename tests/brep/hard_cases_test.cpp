@@ -30,6 +30,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_ConicalSurface.hxx>
+#include <Geom_Circle.hxx>
 #include <Geom_Ellipse.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <gp_Elips.hxx>
@@ -48,6 +49,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 
@@ -492,6 +494,37 @@ TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
     ASSERT_TRUE(model);
     test::tessellateAndCheck(*model, test::absolute(f.deflection));
   }
+}
+
+// An edge whose 3D curve strays from its face within its own tolerance, as STEP files carry them
+// (linkrods.step: 4.1e-4 off a B-spline face, its deflection at 0.01% 5.7e-4): here a quarter
+// cylinder of radius 10 whose bottom edge's curve is a circle 0.7 of the deflection inside it. Its
+// chords, sagging inwards too, missed the surface by up to 1.47x the deflection, and the refinement
+// marched points into the chords' corners (372 triangles, slivers); the edge is now halved until
+// its chords keep to the surface, but for the gap itself.
+TEST(HardCases, AnEdgeStrayingWithinItsToleranceKeepsTheFaceWithinTheDeflection) {
+  const double radius = 10, deflection = 0.01, gap = 0.7 * deflection;
+  const TopoDS_Face face = test::uvPolygonFace(new Geom_CylindricalSurface(gp_Ax3(), radius),
+                                               {{0, 0}, {M_PI / 2, 0}, {M_PI / 2, 5}, {0, 5}});
+  BRep_Builder builder;
+  int moved = 0;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+    if (std::abs(curve->Value(0.5 * (first + last)).Z()) > 1e-9) continue;  // not the bottom edge
+    builder.UpdateEdge(edge, new Geom_Circle(gp_Ax2(), radius - gap), 1.2 * gap);
+    builder.Range(edge, 0, M_PI / 2);
+    for (TopExp_Explorer v(edge, TopAbs_VERTEX); v.More(); v.Next())
+      builder.UpdateVertex(TopoDS::Vertex(v.Current()), 1.2 * gap);
+    ++moved;
+  }
+  ASSERT_EQ(moved, 1);
+  auto model = test::loadShape(face, "straying_edge");
+  ASSERT_TRUE(model);
+  auto t = test::tessellateAndCheck(*model, test::absolute(deflection));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
 }
 
 // A wing's skin between two ribs, as IGES files carry it: a cubic B-spline profile (chord 1)

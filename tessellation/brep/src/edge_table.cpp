@@ -874,6 +874,41 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
       gp_Vec na[2], nb[2];
       int depth;
     };
+    // Whether a face's surface along the chord (pa, pb) lies farther than `chordal` from it, across
+    // the surface (along its normal), where halving can bring it nearer: the face mesher's
+    // boundary is the chord's straight line in the face's scaled UV, and the triangles on it sample
+    // the surface there. An edge's 3D curve may stray from the surface within its own tolerance
+    // (linkrods.step: 4.1e-4 from a B-spline face, its deflection at 0.01% 5.7e-4): its chords
+    // sagging towards the same side as the gap missed the surface by 1.3x the deflection, and the
+    // refinement marched points into the chord's corner, each a third as far as the one before,
+    // leaving a pile of flipped slivers. The gap itself (the curve against the surface at the
+    // same parameter) halving cannot close: only while it is within `chordal` and the chord's own
+    // part (the rest) is over a tenth of it.
+    auto surfaceLeavesChord = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, double chordal) {
+      for (std::size_t k = 0; k < uses; ++k) {
+        const UvChord c = uvChord(k, ta, tb);
+        if (!(c.len > 0)) continue;
+        for (double f : {0.5, 0.25, 0.75}) {
+          double u = 0, v = 0;
+          offChord(k, c, f, 0, 1, u, v);
+          gp_Pnt under;
+          const gp_Vec n = normalAt(k, u, v, under);
+          const double m = n.Magnitude();
+          if (!(m > 0)) continue;
+          const double across =
+              std::abs(gp_Vec(pa.XYZ() + f * (pb.XYZ() - pa.XYZ()), under.XYZ()).Dot(n)) / m;
+          if (!(across > chordal)) continue;
+          const double t = ta + f * (tb - ta);
+          const gp_Pnt2d uv = info.faces[k].pcurve->Value(pcurveParameter(info, info.faces[k], t));
+          gp_Pnt onSurface;
+          const gp_Vec ns = normalAt(k, uv.X(), uv.Y(), onSurface);
+          if (!(ns.Magnitude() > 0)) continue;
+          const double gap = std::abs(gp_Vec(curve.Value(t), onSurface).Dot(ns)) / ns.Magnitude();
+          if (gap < chordal && across - gap > 0.1 * chordal) return true;
+        }
+      }
+      return false;
+    };
     // Whether segment s misses the criteria of tolerance `crit` and must be halved.
     auto misses = [&](const Item& s, const Level& crit) {
       if (!(s.tb - s.ta > 1e-12 * std::max(1.0, std::abs(s.tb)))) return false;
@@ -895,6 +930,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
             return true;
         }
       }
+      if (surfaceLeavesChord(s.ta, s.tb, s.pa, s.pb, crit.chordal)) return true;
       if (!(chord > minSize)) return false;
       for (std::size_t k = 0; k < uses; ++k)
         if (angleBetween(s.na[k], s.nb[k]) > crit.angleRad) return true;
