@@ -898,6 +898,7 @@ void FaceMesher::buildChords(const FaceMesh& mesh) {
       if (n.Magnitude() == 0 || len == 0) continue;
       c.n = n.Normalized();
       c.pa = cdt_->point(a), c.pb = cdt_->point(b);
+      c.pole = singular_[a] ? 0 : singular_[b] ? 1 : -1;
       const std::size_t oa = out(a), ob = out(b);
       const gp_Vec inward = c.n.Crossed(c.ab / len);
       // Sampled at 1/4, 1/2 and 3/4 of the chord (a wavy surface need not peak mid-chord).
@@ -1022,6 +1023,15 @@ bool FaceMesher::clearOfChords(double u, double v, bool mayStand) const {
       return facet.Dot(nSum) > kStandingFacetCos * facet.Magnitude() * nSum.Magnitude();
     };
     const double distance = facet.Dot(c.n), need = near ? c.clearance * c.ab.Magnitude() : 0.0;
+    // Far from a chord out of a pole, past the pole in 3D: the point lies round the pole from the
+    // chord, not behind it. A full sphere's seam chord into its pole reaches, in scaled UV, over
+    // points beyond the pole on the far side, all "behind" its line: a ball of Axis_of_bearing at
+    // 0.01% kept a sliver standing edge-on across the pole on two coarse levels, every point that
+    // would split it refused.
+    if (!near && c.pole >= 0) {
+      const double along = gp_Vec(c.a, x).Dot(c.ab) / c.ab.SquareMagnitude();
+      if (c.pole == 0 ? along < 0 : along > 1) continue;
+    }
     if (!alongside) {
       if (distance < need && !standsOn()) pastEndRefused = true;
       continue;

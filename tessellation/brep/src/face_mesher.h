@@ -327,6 +327,7 @@ class FaceMesher {
     double clearance = 0;
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // guarded zone in scaled UV
     double near = 0;  // within this of the chord's ends' box the whole clearance is kept; beyond, its side
+    std::int8_t pole = -1;  // which end is a pole or apex (0: a, 1: b), if one is
   };
   std::vector<Chord> chords_;
   std::vector<std::uint32_t> poleChords_;  // those with an end at a pole or apex
