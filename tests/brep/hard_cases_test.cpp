@@ -470,7 +470,8 @@ TEST(HardCases, ThinStripsRunAlongTheirLength) {
 // lying behind the line of a chord whose edge curves on past its end (26.07). Two more on the
 // tube's top at 0.4, whose first row the refinement put just past the angle from a chord's end
 // (20.08 degrees on the eighth, 21.03 on the quarter), every point between them behind the chord's
-// line: the split moves towards the chord's end until within the angle.
+// line or making a facet with it turned more than 60 degrees from the surface: the split moves
+// towards the chord's end until within the angle.
 TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   struct Fillet {
     // ring and tube radii, tube angles (degrees), absolute deflection

@@ -311,7 +311,8 @@ class FaceMesher {
   // the edge could never be split again. Moves (u, v) towards that end until it keeps the angle, if
   // the point there is clear. A narrow fillet under a long chord that sags below it (a torus tube
   // of 0.15 on a ring of 20 at 0.4): the first row came 20.1 and 22 degrees across from the chord's
-  // ends, and every point between lay behind the chord's line in 3D (21.03 degrees kept).
+  // ends, and every point between lay behind the chord's line in 3D or faced away from the surface
+  // (21.03 degrees kept).
   void keepRowWithinAngleOfChord(cet::TriangleId t, int edge, const FaceMesh& mesh, double minCos, double& u,
                                  double& v) const;
   // Whether (u, v) keeps every nearby chord's clearance. mayStand: within a clearance, also a point
