@@ -500,6 +500,28 @@ TEST(HardCases, ANarrowFilletAlongSaggingChordsKeepsTheAngle) {
   }
 }
 
+// Replaces the 3D curve of each edge of `face` whose curve's middle `which` picks by move(curve),
+// over the same parameter range (the pcurves stay), with `tolerance` on the edge and its vertices;
+// returns how many.
+int moveEdgeCurves(const TopoDS_Face& face, const std::function<bool(const gp_Pnt&)>& which,
+                   const std::function<Handle(Geom_Curve)(const Handle(Geom_Curve) &)>& move,
+                   double tolerance) {
+  BRep_Builder builder;
+  int moved = 0;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+    if (!which(curve->Value(0.5 * (first + last)))) continue;
+    builder.UpdateEdge(edge, move(curve), tolerance);
+    builder.Range(edge, first, last);
+    for (TopExp_Explorer v(edge, TopAbs_VERTEX); v.More(); v.Next())
+      builder.UpdateVertex(TopoDS::Vertex(v.Current()), tolerance);
+    ++moved;
+  }
+  return moved;
+}
+
 // An edge whose 3D curve strays from its face within its own tolerance, as STEP files carry them
 // (linkrods.step: 4.1e-4 off a B-spline face, its deflection at 0.01% 5.7e-4): here a quarter
 // cylinder of radius 10 whose bottom edge's curve is a circle 0.7 of the deflection inside it. Its
@@ -510,20 +532,13 @@ TEST(HardCases, AnEdgeStrayingWithinItsToleranceKeepsTheFaceWithinTheDeflection)
   const double radius = 10, deflection = 0.01, gap = 0.7 * deflection;
   const TopoDS_Face face = test::uvPolygonFace(new Geom_CylindricalSurface(gp_Ax3(), radius),
                                                {{0, 0}, {M_PI / 2, 0}, {M_PI / 2, 5}, {0, 5}});
-  BRep_Builder builder;
-  int moved = 0;
-  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
-    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
-    double first = 0, last = 0;
-    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
-    if (std::abs(curve->Value(0.5 * (first + last)).Z()) > 1e-9) continue;  // not the bottom edge
-    builder.UpdateEdge(edge, new Geom_Circle(gp_Ax2(), radius - gap), 1.2 * gap);
-    builder.Range(edge, 0, M_PI / 2);
-    for (TopExp_Explorer v(edge, TopAbs_VERTEX); v.More(); v.Next())
-      builder.UpdateVertex(TopoDS::Vertex(v.Current()), 1.2 * gap);
-    ++moved;
-  }
-  ASSERT_EQ(moved, 1);
+  ASSERT_EQ(moveEdgeCurves(
+                face, [](const gp_Pnt& middle) { return std::abs(middle.Z()) < 1e-9; },  // the bottom edge
+                [&](const Handle(Geom_Curve) & c) {
+                  return Handle(Geom_Curve)::DownCast(c->Scaled(gp_Pnt(0, 0, 0), (radius - gap) / radius));
+                },
+                1.2 * gap),
+            1);
   auto model = test::loadShape(face, "straying_edge");
   ASSERT_TRUE(model);
   auto t = test::tessellateAndCheck(*model, test::absolute(deflection));
@@ -532,8 +547,7 @@ TEST(HardCases, AnEdgeStrayingWithinItsToleranceKeepsTheFaceWithinTheDeflection)
 }
 
 // A quarter annulus in z = 0 as a rational B-spline (radii inner to outer, bounded by its iso-lines)
-// whose inner arc's 3D curve is replaced by move(curve), with tolerance `tolerance` on the edge and
-// its vertices; the pcurve (the surface's bound) stays.
+// whose inner arc's 3D curve is replaced by move(curve), as moveEdgeCurves.
 TopoDS_Face annulusWithMovedInnerEdge(
     double inner, double outer, const std::function<Handle(Geom_Curve)(const Handle(Geom_Curve) &)>& move,
     double tolerance) {
@@ -542,21 +556,12 @@ TopoDS_Face annulusWithMovedInnerEdge(
           new Geom_SurfaceOfRevolution(new Geom_Line(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), gp_Ax1()), 0,
           M_PI / 2, inner, outer));
   const TopoDS_Face face = BRepBuilderAPI_MakeFace(annulus, 1e-7).Face();
-  BRep_Builder builder;
-  int moved = 0;
-  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
-    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
-    double first = 0, last = 0;
-    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
-    const gp_Pnt middle = curve->Value(0.5 * (first + last));
-    if (std::abs(std::hypot(middle.X(), middle.Y()) - inner) > 1e-6) continue;  // not the inner arc
-    builder.UpdateEdge(edge, move(curve), tolerance);
-    builder.Range(edge, first, last);
-    for (TopExp_Explorer v(edge, TopAbs_VERTEX); v.More(); v.Next())
-      builder.UpdateVertex(TopoDS::Vertex(v.Current()), tolerance);
-    ++moved;
-  }
-  EXPECT_EQ(moved, 1);
+  EXPECT_EQ(
+      moveEdgeCurves(
+          face,
+          [&](const gp_Pnt& middle) { return std::abs(std::hypot(middle.X(), middle.Y()) - inner) < 1e-6; },
+          move, tolerance),
+      1);
   return face;
 }
 
