@@ -917,7 +917,7 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
     // out of the surface's side count too, in the chord's distance and in the gap
     // (iges/bearing.iges at 0.01%: chords sagging 0.8 of the deflection out of a B-spline's side,
     // 0.22 of it above, made face 77 1.002x; counted in the chord's distance alone, a curve lying
-    // out of the side by more than the deflection was halved to the point cap on every level).
+    // out of the side by more than the deflection was halved to the point cap).
     auto surfaceLeavesChord = [&](double ta, double tb, const gp_Pnt& pa, const gp_Pnt& pb, double chordal) {
       for (std::size_t k = 0; k < uses; ++k) {
         const UvChord c = uvChord(k, ta, tb);
