@@ -606,8 +606,8 @@ TEST(HardCases, AnEdgeStrayingPastItsSurfacesBoundIsNotHalvedWithoutEnd) {
   ASSERT_TRUE(model);
   auto t = test::tessellate(*model, test::absolute(deflection));
   ASSERT_TRUE(t);
-  // Reported (the mesh keeps to the edge, which strays beyond the deflection), in a few hundred
-  // triangles.
+  // Reported (the mesh keeps to the edge, which strays beyond the deflection), in a bounded count of
+  // triangles (142 here).
   EXPECT_LT(t->triangleCount(t->lastLevel()), 1000u);
   EXPECT_EQ(t->report(0).status, FaceStatus::kRepaired);
   EXPECT_NE(t->report(0).reason.find("stray"), std::string::npos) << t->report(0).reason;
