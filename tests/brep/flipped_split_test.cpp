@@ -18,7 +18,7 @@ namespace {
 // flipped needle there (two corners 0.004 apart, the third on the side 0.9 away) could not be
 // split on its long edges (their points fell in the side's chord clearance) and was split on its
 // short edge instead, whose midpoint all but repeated a corner: the same needle again, pass after
-// pass, 964 flipped triangles where 45 are left now. A split point on an edge less than a quarter
+// pass, 964 flipped triangles where 50 are left now. A split point on an edge less than a tenth
 // of the triangle's longest is no longer taken.
 TEST(FlippedSplit, ANeedleIsNotSplitOnItsShortEdge) {
   auto model = test::loadTestData("needle_beside_crowded_knots.brep");

@@ -1090,10 +1090,10 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     }
     // Free-edge midpoints, except on an edge far shorter than the triangle: its midpoint would all
     // but repeat a corner, leaving t as it was (and t would ask again, pass after pass). Under a
-    // quarter of the longest edge is too short: a needle split on its short edge is the same needle
-    // (a fuzzed face's needle beside a side with crowded knots, its long edges' midpoints inside the
-    // side's clearance, took one a pass: 964 flipped triangles where 45 are left; at a thousandth,
-    // the bound before, its short edge was 0.004 of 0.9).
+    // tenth of the longest edge is too short: a needle split on its short edge is the same needle
+    // (a fuzzed face's needles beside a side with crowded knots, their long edges' midpoints inside
+    // the side's clearance, took one split a pass: 964 flipped triangles where 50 are left; at a
+    // thousandth, the bound before, one's short edge was 0.004 of 0.9 in 3D).
     double length[3], longest = 0;
     for (int i = 0; i < 3; ++i) {
       const cet::Point2 a = cdt_->point(m.vertex(t, (i + 1) % 3)), b = cdt_->point(m.vertex(t, (i + 2) % 3));
@@ -1102,7 +1102,7 @@ bool FaceMesher::safeSplit(cet::TriangleId t, double& u, double& v, const FaceMe
     }
     int n = 1;
     for (int i = 0; i < 3; ++i) {
-      if (m.isConstrained(t, i) || length[i] < 0.25 * longest) continue;
+      if (m.isConstrained(t, i) || length[i] < 0.1 * longest) continue;
       tu[n] = 0.5 * (cu[(i + 1) % 3] + cu[(i + 2) % 3]), tv[n] = 0.5 * (cv[(i + 1) % 3] + cv[(i + 2) % 3]);
       if (!eval_.linear()) {
         const double half[2] = {0.5, 0.5}, eu[2] = {cu[(i + 1) % 3], cu[(i + 2) % 3]},
