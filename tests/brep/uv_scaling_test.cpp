@@ -5,7 +5,8 @@
 // a cylinder (1000:1 with tolerances), on the cylinder written as a B-spline (as far between its
 // iso-lines, 30:1 within a curved outline), on the same torus written as a B-spline (a fillet as
 // STEP files carry them: free-form, up to 3:1) and on a B-spline sheet curved one way here and the
-// other way there (no stretch).
+// other way there (no stretch). Within a B-spline span whose speed rises by orders of magnitude,
+// the scale follows it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,11 +23,15 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Elips2d.hxx>
 
+#include "brep/measure.h"
 #include "surface_eval.h"
+#include "test_support.h"
 
 namespace cetview::brep {
 namespace {
@@ -176,6 +181,53 @@ TEST(UvScaling, TwistedRuledBSplineIsNotStretchedAsADevelopable) {
   const Handle(Geom_BSplineSurface) sheet = GeomAPI_PointsToBSplineSurface(points, 3, 8, GeomAbs_C2, 1e-6).Surface();
   ASSERT_FALSE(sheet.IsNull());
   EXPECT_GE(stretch(sheet, 0.01, 20 * M_PI / 180), 1.0 / 3 - 1e-9);
+}
+
+// A bicubic sheet whose last v span is a millionth as wide as the one before, joined C2 at the knot:
+// |Sv| is 30 at the knot and rises to 2.4e7 within the span. One scale per span (its mean) made a
+// step just past the knot 1e5 times longer in the scaled plane than in 3D; the span is now halved
+// until the speed is even over each piece, and a step anywhere reads about its 3D length. (Without
+// tolerances: at 0.01 and 20 degrees the sheet turns past the angle within a tenth of the
+// tolerance of the knot, a sharp knot, and a span beside one keeps its scale.)
+TEST(UvScaling, ASpanWhoseSpeedRisesByOrdersOfMagnitudeIsScaledAlongIt) {
+  TColgp_Array2OfPnt poles(1, 4, 1, 5);
+  for (int i = 1; i <= 4; ++i)
+    for (int j = 1; j <= 5; ++j)
+      poles(i, j) = gp_Pnt(10.0 * (i - 1), 10.0 * (j - 1), 3.0 * std::sin(1.7 * i + 2.3 * j));
+  TColStd_Array1OfReal uKnots(1, 2), vKnots(1, 3);
+  TColStd_Array1OfInteger uMults(1, 2), vMults(1, 3);
+  uKnots(1) = 0, uKnots(2) = 1, uMults(1) = uMults(2) = 4;
+  vKnots(1) = 0, vKnots(2) = 1, vKnots(3) = 1 + 1e-6, vMults(1) = 4, vMults(2) = 1, vMults(3) = 4;
+  const Handle(Geom_BSplineSurface) sheet =
+      new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3);
+  const SurfaceEval eval(BRepBuilderAPI_MakeFace(sheet, 1e-7).Face());
+  for (double f : {-0.5, -1e-3, 1e-3, 3e-3, 0.01, 0.1, 0.5, 0.9}) {  // of each span's width from the knot
+    const double u = 0.5, v = f < 0 ? 1 + f : 1 + f * 1e-6, h = 1e-4 * (f < 0 ? 1.0 : 1e-6) * std::abs(f);
+    gp_Pnt p;
+    gp_Vec du, dv;
+    eval.adaptor().D1(u, v, p, du, dv);
+    const cet::Point2 a = eval.scaled(u, v), b = eval.scaled(u, v + h);
+    const double alongV = std::hypot(b.x - a.x, b.y - a.y) / (h * dv.Magnitude());
+    EXPECT_GT(alongV, 0.5) << "at " << f;
+    EXPECT_LT(alongV, 2.0) << "at " << f;
+  }
+}
+
+// height_field_with_a_tiny_last_span.brep (face_fuzz seed 20261125, input 231): a bicubic height
+// field 5000 across whose last v span is 2.6e-6 wide after one 0.56 wide; its |Sv| rises from 2.5e4
+// at the knot to 5.1e9 at the end, the span covering a quarter of the face in 3D. At 0.0152% and
+// 57.9 degrees its last level had 53380 triangles, 728 of them flipped in a row along the knot,
+// where triangles well shaped at the span's mean scale lay flat in 3D; now 15769, none flipped.
+TEST(UvScaling, AHeightFieldWithATinyLastSpanIsMeshedWithoutSlivers) {
+  auto model = test::loadTestData("height_field_with_a_tiny_last_span.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::relative(0.00015201004304370571, 57.905241474021516));
+  ASSERT_TRUE(t);
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  ASSERT_FALSE(levels.empty());
+  EXPECT_EQ(levels.back().flipped, 0u);
+  EXPECT_EQ(levels.back().degenerate, 0u);
+  EXPECT_LT(levels.back().triangles, 30000u);
 }
 
 }  // namespace

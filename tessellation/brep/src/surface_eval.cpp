@@ -214,13 +214,15 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   if (!(sv > 0) || !std::isfinite(sv)) sv = 1;
   uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {su};
   vAxis_.t = {v0}, vAxis_.x = {0.0}, vAxis_.slope = {sv};
+  std::vector<std::pair<double, double>> uUneven, vUneven;  // spans divideUnevenSpans() divides
   try {
-    buildAxis(true, uAxis_);
-    buildAxis(false, vAxis_);
+    buildAxis(true, uAxis_, uUneven);
+    buildAxis(false, vAxis_, vUneven);
     if (surface_.GetType() == GeomAbs_Sphere) buildConformalSphereAxes();
   } catch (const Standard_Failure&) {
     uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {su}, uAxis_.period = 0;
     vAxis_.t = {v0}, vAxis_.x = {0.0}, vAxis_.slope = {sv}, vAxis_.period = 0;
+    uUneven.clear(), vUneven.clear();
   }
 
   // Creases: the ends of the surface's C1 intervals inside its parameter range; a periodic
@@ -266,11 +268,22 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
       all.erase(std::unique(all.begin(), all.end()), all.end());
     }
   }
+  // After the sharp knots, which compare the spans' mean speeds either side of a knot.
+  if (!uUneven.empty() || !vUneven.empty()) {
+    const Axis uKnots = uAxis_, vKnots = vAxis_;
+    try {
+      divideUnevenSpans(true, uUneven, uSharpKnots_, uAxis_);
+      divideUnevenSpans(false, vUneven, vSharpKnots_, vAxis_);
+    } catch (const Standard_Failure&) {
+      uAxis_ = uKnots, vAxis_ = vKnots;
+    }
+  }
   if (uPeriodic_ && !uCreases_.empty()) uPeriod_ = surface_.UPeriod();
   if (vPeriodic_ && !vCreases_.empty()) vPeriod_ = surface_.VPeriod();
 }
 
-void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
+void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double, double>>& uneven) const {
+  uneven.clear();
   if (surface_.GetType() != GeomAbs_BSplineSurface) return;
   const Handle(Geom_BSplineSurface) bs = surface_.Surface().BSpline();  // unlocated: no copy (knots only)
   const int n = uDir ? bs->NbUKnots() : bs->NbVKnots();
@@ -328,24 +341,31 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
     const bool covered = knots[k + 1] > from && knots[k] < to;
     if (!covered && !periodic) continue;
-    double sum = 0;
+    double sum = 0, third[3] = {0, 0, 0};
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 5; ++j) {
         const double t = knots[k] + (knots[k + 1] - knots[k]) * (i + 0.5) / 3, w = lo + (hi - lo) * (j + 0.5) / 5;
-        gp_Pnt p;
-        gp_Vec du, dv;
-        if (uDir) {
-          d1(t, w, p, du, dv);
-        } else {
-          d1(w, t, p, du, dv);
-        }
-        sum += (uDir ? du : dv).Magnitude();
+        const double speed = speedAlong(uDir, t, w);
+        sum += speed, third[i] += speed;
       }
     }
     slope[k] = sum / 15;
     if (covered) smin = std::min(smin, slope[k]), smax = std::max(smax, slope[k]);
+    // Uneven: the speed differs between the thirds, and just inside an end it is far below the
+    // span's mean (where the span's one scale stretches the scaled plane most).
+    const double low = std::min({third[0], third[1], third[2]}),
+                 high = std::max({third[0], third[1], third[2]});
+    if (covered && high > kUnevenSpanSpread * low && std::isfinite(high)) {
+      const double width = knots[k + 1] - knots[k];
+      const double ends[2] = {meanSpeedAcross(uDir, knots[k] + 1e-3 * width),
+                              meanSpeedAcross(uDir, knots[k + 1] - 1e-3 * width)};
+      if (std::min(ends[0], ends[1]) * kSlowEndRatio < slope[k]) uneven.emplace_back(knots[k], knots[k + 1]);
+    }
   }
-  if (!(smax > 4 * smin) || !std::isfinite(smax)) return;
+  if (!(smax > 4 * smin) || !std::isfinite(smax)) {
+    uneven.clear();
+    return;
+  }
   // A span without extent (its poles on one point) still needs some room in x.
   const double mean = uDir ? su : sv;
   for (double& s : slope) s = std::isfinite(s) ? std::max(s, 1e-3 * mean) : mean;
@@ -365,6 +385,82 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis) const {
   for (std::size_t k = 0; k < slope.size(); ++k) axis.x.push_back(axis.x.back() + (knots[k + 1] - knots[k]) * slope[k]);
   axis.period = periodic ? knots.back() - knots.front() : 0.0;
   axis.periodX = axis.x.back();
+}
+
+double SurfaceEval::speedAlong(bool uDir, double t, double w) const {
+  gp_Pnt p;
+  gp_Vec du, dv;
+  if (uDir) {
+    d1(t, w, p, du, dv);
+  } else {
+    d1(w, t, p, du, dv);
+  }
+  return (uDir ? du : dv).Magnitude();
+}
+
+double SurfaceEval::meanSpeedAcross(bool uDir, double t) const {
+  const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
+  double sum = 0;
+  for (int j = 0; j < 5; ++j) sum += speedAlong(uDir, t, lo + (hi - lo) * (j + 0.5) / 5);
+  return sum / 5;
+}
+
+void SurfaceEval::divideUnevenSpans(bool uDir, const std::vector<std::pair<double, double>>& uneven,
+                                    const std::vector<double>& sharpKnots, Axis& axis) const {
+  if (uneven.empty() || axis.slope.size() < 2) return;
+  const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
+  const auto speed = [&](double t) { return meanSpeedAcross(uDir, t); };
+  // The mean 3D chord over [a, b] along five lines across the face, over b - a.
+  auto chordSlope = [&](double a, double b) {
+    double sum = 0;
+    for (int j = 0; j < 5; ++j) {
+      const double w = lo + (hi - lo) * (j + 0.5) / 5;
+      sum += uDir ? point(a, w).Distance(point(b, w)) : point(w, a).Distance(point(w, b));
+    }
+    return sum / 5 / (b - a);
+  };
+  double mean = 0;
+  for (std::size_t k = 0; k < axis.slope.size(); ++k) mean += axis.slope[k] * (axis.t[k + 1] - axis.t[k]);
+  mean /= axis.t.back() - axis.t.front();
+  std::vector<double> t{axis.t.front()}, slope;
+  std::size_t next = 0;  // the next uneven span
+  for (std::size_t k = 0; k < axis.slope.size(); ++k) {
+    const double a = axis.t[k], b = axis.t[k + 1];
+    while (next < uneven.size() && uneven[next].first < a) ++next;
+    const bool bySharpKnot = std::binary_search(sharpKnots.begin(), sharpKnots.end(), a) ||
+                             std::binary_search(sharpKnots.begin(), sharpKnots.end(), b);
+    if (next == uneven.size() || uneven[next].first != a || uneven[next].second != b || bySharpKnot) {
+      t.push_back(b), slope.push_back(axis.slope[k]);
+      continue;
+    }
+    // Halves until the speed at a sixth, the middle and five sixths of a piece is within
+    // kEvenPieceSpread (inside it: at a knot, the derivative may be the next span's).
+    struct Piece {
+      double a, b;
+      int depth;
+    };
+    std::vector<Piece> stack{Piece{a, b, 0}};  // the first half on top: pieces in order
+    while (!stack.empty()) {
+      const Piece q = stack.back();
+      stack.pop_back();
+      const double w = q.b - q.a, m = 0.5 * (q.a + q.b);
+      const double s0 = speed(q.a + w / 6), s1 = speed(m), s2 = speed(q.b - w / 6);
+      const double low = std::min({s0, s1, s2}), high = std::max({s0, s1, s2});
+      if (q.depth < kUnevenSpanDepth && m > q.a && m < q.b && !(high <= kEvenPieceSpread * low)) {
+        stack.push_back(Piece{m, q.b, q.depth + 1});
+        stack.push_back(Piece{q.a, m, q.depth + 1});
+        continue;
+      }
+      const double s = chordSlope(q.a, q.b);
+      t.push_back(q.b), slope.push_back(std::isfinite(s) ? std::max(s, 1e-3 * mean) : axis.slope[k]);
+    }
+  }
+  axis.t = t;
+  axis.slope = slope;
+  axis.x.assign(1, 0.0);
+  for (std::size_t k = 0; k < slope.size(); ++k)
+    axis.x.push_back(axis.x.back() + (t[k + 1] - t[k]) * slope[k]);
+  if (axis.period > 0) axis.periodX = axis.x.back();
 }
 
 void SurfaceEval::findSharpKnots(bool uDir, const Axis& axis, double reach, double angleRad, std::vector<double>& out) const {

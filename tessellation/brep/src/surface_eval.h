@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -248,7 +249,28 @@ class SurfaceEval {
   // Past the knots by less than this share of the end span, the extension runs at the span's own
   // speed (and rounding in the pcurves' boxes reaches 1e-9 past them on sample models).
   static constexpr double kReachMargin = 0.01;
-  void buildAxis(bool uDir, Axis& axis) const;
+  // Spans whose speed differs by more than kUnevenSpanSpread between its samples (at a sixth, the
+  // middle and five sixths) and, just inside an end, falls kSlowEndRatio below the span's mean go
+  // to `uneven` for divideUnevenSpans().
+  void buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double, double>>& uneven) const;
+  // One scale per span is too coarse where the speed changes by orders of magnitude inside a span: a
+  // fuzzed B-spline's last v span, 2.6e-6 wide after one 0.56 wide, joins it C2, its |Sv| rising
+  // from 2.5e4 at the knot to 5.1e9 at the end; at its mean scale, triangles shaped well in the
+  // scaled plane lay flat in 3D along the knot (728 flipped on the last level). Such spans are
+  // halved (kUnevenSpanDepth times at most) until the speed at a sixth, the middle and five sixths
+  // of each piece is within kEvenPieceSpread, each piece scaled by its mean 3D chord. Not beside a
+  // sharp knot, which the mesher takes as a crease (dividing the fast span there, and spans whose
+  // speed varies less, left more flipped triangles on the fuzzed faces the tests keep). After
+  // findSharpKnots(), which compares the spans' own means.
+  static constexpr double kUnevenSpanSpread = 4;
+  static constexpr double kSlowEndRatio = 100;
+  static constexpr double kEvenPieceSpread = 2;
+  static constexpr int kUnevenSpanDepth = 16;
+  // |Su| at (t, w) (uDir) or |Sv| at (w, t); and its mean over five lines w across the face's box.
+  double speedAlong(bool uDir, double t, double w) const;
+  double meanSpeedAcross(bool uDir, double t) const;
+  void divideUnevenSpans(bool uDir, const std::vector<std::pair<double, double>>& uneven,
+                         const std::vector<double>& sharpKnots, Axis& axis) const;
   // Knots of a B-spline direction (scaled by `axis`) that act as creases although the surface is C1
   // or smoother there: beside a span kSharpKnotSpeedRatio times faster than its neighbour, the
   // normal turns by more than angleRad within `reach` (3D) of the knot line. The turn is real, but
