@@ -250,7 +250,8 @@ class SurfaceEval {
   // speed (and rounding in the pcurves' boxes reaches 1e-9 past them on sample models).
   static constexpr double kReachMargin = 0.01;
   // Spans whose speed differs by more than kUnevenSpanSpread between its samples (at a sixth, the
-  // middle and five sixths) and, just inside an end, falls kSlowEndRatio below the span's mean go
+  // middle and five sixths) and, just inside an end, falls kSlowEndRatio below the span's mean,
+  // to within kUnevenSpanSpread of the mean speed of the covered span across that end's knot, go
   // to `uneven` for divideUnevenSpans().
   void buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double, double>>& uneven) const;
   // One scale per span is too coarse where the speed changes by orders of magnitude inside a span: a
@@ -258,7 +259,8 @@ class SurfaceEval {
   // from 2.5e4 at the knot to 5.1e9 at the end; at its mean scale, triangles shaped well in the
   // scaled plane lay flat in 3D along the knot (728 flipped on the last level). Such spans are
   // halved (kUnevenSpanDepth times at most) until the speed at a sixth, the middle and five sixths
-  // of each piece is within kEvenPieceSpread, each piece scaled by its mean 3D chord. Not beside a
+  // of each piece is within kEvenPieceSpread, each piece scaled by its mean 3D chord (past
+  // kMaxPiecesPerSpan pieces the span keeps its scale). Not beside a
   // sharp knot, which the mesher takes as a crease (dividing the fast span there, and spans whose
   // speed varies less, left more flipped triangles on the fuzzed faces the tests keep). After
   // findSharpKnots(), which compares the spans' own means.
@@ -266,6 +268,7 @@ class SurfaceEval {
   static constexpr double kSlowEndRatio = 100;
   static constexpr double kEvenPieceSpread = 2;
   static constexpr int kUnevenSpanDepth = 16;
+  static constexpr std::size_t kMaxPiecesPerSpan = 64;
   // |Su| at (t, w) (uDir) or |Sv| at (w, t); and its mean over five lines w across the face's box.
   double speedAlong(bool uDir, double t, double w) const;
   double meanSpeedAcross(bool uDir, double t) const;
