@@ -247,6 +247,21 @@ TEST(UvScaling, ASheetPinchedAtAKnotKeepsItsSpansScale) {
                        test::relative(0.0058036175710758908, 58.622796978713666), 500);
 }
 
+// planar_sheet_unevenly_weighted.brep (face_fuzz seed 20261125, input 193): a flat rational bicubic
+// sheet whose weights squeeze it unevenly. Its first u span, 9e-7 wide, slows from |Su| = 4e6..2e8
+// at the side to 0.008..1.1 at the knot: 140x apart across the face, so no scale along u follows
+// it. Divided after the speed (37 pieces), its last level at 0.0472% and 46.4 degrees had 17054
+// triangles, 534 of them flipped beside the knot; with one scale for the span, 11112 and one
+// flipped (a triangle on the v = 658.93 side, where |Sv| is 49 against 0.001 a little inside).
+TEST(UvScaling, AnUnevenlyWeightedSheetKeepsItsSpansScale) {
+  const std::vector<FaceQuality> levels = test::testDataEveryLevel(
+      "planar_sheet_unevenly_weighted.brep", test::relative(0.00047233529645660972, 46.446173800259402));
+  ASSERT_FALSE(levels.empty());
+  EXPECT_LE(levels.back().flipped, 1u);
+  EXPECT_EQ(levels.back().degenerate, 0u);
+  EXPECT_LT(levels.back().triangles, 14000u);
+}
+
 // sheet_slowing_into_its_sides.brep (face_fuzz seed 606, input 263): a bicubic sheet 0.001 square
 // in UV whose last spans run 1000 times slower than its first, collapsing towards two of its sides.
 // Its refinement stops at the pass bound on its last level (0.0439%, 43.7 degrees) and says so,

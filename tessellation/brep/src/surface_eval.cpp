@@ -309,6 +309,7 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double,
     std::size_t span;
     int side;      // 0: its first knot, 1: its last
     double speed;  // just inside it
+    double spread;  // there, the fastest of the five lines across the face over the slowest
   };
   std::vector<SlowEnd> slowEnds;
   double smin = 1e300, smax = 0;
@@ -363,17 +364,23 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double,
                  high = std::max({third[0], third[1], third[2]});
     if (covered && high > kUnevenSpanSpread * low && std::isfinite(high)) {
       const double width = knots[k + 1] - knots[k];
-      const double ends[2] = {meanSpeedAcross(uDir, knots[k] + 1e-3 * width),
-                              meanSpeedAcross(uDir, knots[k + 1] - 1e-3 * width)};
+      double spreads[2];
+      const double ends[2] = {meanSpeedAcross(uDir, knots[k] + 1e-3 * width, &spreads[0]),
+                              meanSpeedAcross(uDir, knots[k + 1] - 1e-3 * width, &spreads[1])};
       const int slow = ends[0] <= ends[1] ? 0 : 1;
-      if (ends[slow] * kSlowEndRatio < slope[k]) slowEnds.push_back({k, slow, ends[slow]});
+      if (ends[slow] * kSlowEndRatio < slope[k]) slowEnds.push_back({k, slow, ends[slow], spreads[slow]});
     }
   }
   // Only where the slow end runs on at the speed of the covered span across the knot: a slow
   // span meeting a fast one smoothly. Elsewhere the speed falls towards a line where the surface
   // pinches (its rows collapse), and a scale following it squeezes the plane there (a fuzzed
   // sheet pinched at a knot: 4528 pieces, 86 triangles without a flip became 5426 with 733).
+  // And only where the slow end is slow all along the knot line: a scale per piece of u (or v) can
+  // follow a speed that changes along the span, not one that also changes 100x across the face (a
+  // fuzzed planar sheet whose weights squeeze one corner: dividing took it from 1 flipped
+  // triangle to 534).
   for (const SlowEnd& e : slowEnds) {
+    if (!(e.spread <= kUnevenSpanSpread)) continue;
     const std::size_t across = e.side == 0 ? e.span - 1 : e.span + 1;
     if ((e.side == 0 && e.span == 0) || across >= slope.size() || !std::isfinite(slope[across])) continue;
     if (!(knots[across + 1] > from && knots[across] < to)) continue;  // not covered
@@ -416,10 +423,14 @@ double SurfaceEval::speedAlong(bool uDir, double t, double w) const {
   return (uDir ? du : dv).Magnitude();
 }
 
-double SurfaceEval::meanSpeedAcross(bool uDir, double t) const {
+double SurfaceEval::meanSpeedAcross(bool uDir, double t, double* spread) const {
   const double lo = uDir ? vMin : uMin, hi = uDir ? vMax : uMax;
-  double sum = 0;
-  for (int j = 0; j < 5; ++j) sum += speedAlong(uDir, t, lo + (hi - lo) * (j + 0.5) / 5);
+  double sum = 0, low = 1e300, high = 0;
+  for (int j = 0; j < 5; ++j) {
+    const double speed = speedAlong(uDir, t, lo + (hi - lo) * (j + 0.5) / 5);
+    sum += speed, low = std::min(low, speed), high = std::max(high, speed);
+  }
+  if (spread) *spread = high / low;
   return sum / 5;
 }
 

@@ -251,8 +251,9 @@ class SurfaceEval {
   static constexpr double kReachMargin = 0.01;
   // Spans whose speed differs by more than kUnevenSpanSpread between its samples (at a sixth, the
   // middle and five sixths) and, just inside an end, falls kSlowEndRatio below the span's mean,
-  // to within kUnevenSpanSpread of the mean speed of the covered span across that end's knot, go
-  // to `uneven` for divideUnevenSpans().
+  // to within kUnevenSpanSpread of the mean speed of the covered span across that end's knot, and
+  // there varies by no more than kUnevenSpanSpread across the face, go to `uneven` for
+  // divideUnevenSpans().
   void buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double, double>>& uneven) const;
   // One scale per span is too coarse where the speed changes by orders of magnitude inside a span: a
   // fuzzed B-spline's last v span, 2.6e-6 wide after one 0.56 wide, joins it C2, its |Sv| rising
@@ -269,9 +270,10 @@ class SurfaceEval {
   static constexpr double kEvenPieceSpread = 2;
   static constexpr int kUnevenSpanDepth = 16;
   static constexpr std::size_t kMaxPiecesPerSpan = 64;
-  // |Su| at (t, w) (uDir) or |Sv| at (w, t); and its mean over five lines w across the face's box.
+  // |Su| at (t, w) (uDir) or |Sv| at (w, t); and its mean over five lines w across the face's box
+  // (`spread`, if given: the fastest of the five over the slowest).
   double speedAlong(bool uDir, double t, double w) const;
-  double meanSpeedAcross(bool uDir, double t) const;
+  double meanSpeedAcross(bool uDir, double t, double* spread = nullptr) const;
   void divideUnevenSpans(bool uDir, const std::vector<std::pair<double, double>>& uneven,
                          const std::vector<double>& sharpKnots, Axis& axis) const;
   // Knots of a B-spline direction (scaled by `axis`) that act as creases although the surface is C1
