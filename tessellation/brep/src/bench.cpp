@@ -233,6 +233,7 @@ BenchResult benchModel(const std::string& path, const BenchOptions& options) {
         degenerate[f] = countDegenerate(soup);
         try {
           SurfaceEval eval(face);
+          eval.detectFlat(r.deflection);  // as cetview's mesh is measured (measureFaces)
           devs[f] = tri->HasUVNodes()
                         ? measureDeviation(eval, soup.positions.data(), uv.data(), soup.indices.data(),
                                            soup.triangleCount(), r.deflection)

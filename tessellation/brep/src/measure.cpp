@@ -380,6 +380,7 @@ std::vector<FaceQuality> measureFaces(const Tessellator& t, int level, unsigned 
     for (std::size_t i = 0; i + 2 < idx.size(); i += 3) classifyTriangle(m, idx, i, q.degenerate, q.flipped, q.flippedAcrossFolds);
     try {
       SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
+      eval.detectFlat(t.chordal());
       q.maxDeviation = measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data(), q.triangles,
                                         levelTolerance(t, level));
       q.maxCornerAngle = measureCornerAngle(eval, m.positions.data(), m.uv.data(), m.vertexCount(),
@@ -404,6 +405,7 @@ std::vector<std::vector<float>> measureTriangles(const Tessellator& t, int level
     d.assign(idx.size() / 3, INFINITY);
     try {
       SurfaceEval eval(TopoDS::Face(model.faceShapes[f].Oriented(TopAbs_FORWARD)));
+      eval.detectFlat(t.chordal());
       for (std::size_t i = 0; i < d.size(); ++i) {
         d[i] = static_cast<float>(measureDeviation(eval, m.positions.data(), m.uv.data(), idx.data() + 3 * i,
                                                    1, levelTolerance(t, level)));

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include <BRepClass_FaceClassifier.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <BndLib_Add2dCurve.hxx>
 #include <Bnd_Box.hxx>
 #include <Bnd_Box2d.hxx>
+#include <GProp_PEquation.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_BezierCurve.hxx>
@@ -17,6 +19,7 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -280,6 +283,160 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   }
   if (uPeriodic_ && !uCreases_.empty()) uPeriod_ = surface_.UPeriod();
   if (vPeriodic_ && !vCreases_.empty()) vPeriod_ = surface_.VPeriod();
+  detectFlat(chordal);
+}
+
+void SurfaceEval::detectFlat(double chordal) {
+  try {
+    findFlatPlane(chordal);
+  } catch (const Standard_Failure&) {
+    flat_ = false;
+  }
+}
+
+void SurfaceEval::findFlatPlane(double chordal) {
+  if (flat_ || !(chordal > 0) || !direct_ || uPeriodic_ || vPeriodic_ || !(uMax > uMin) || !(vMax > vMin))
+    return;
+  TopLoc_Location location;
+  Handle(Geom_Surface) basis = BRep_Tool::Surface(face_, location);
+  while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis))
+    basis = trimmed->BasisSurface();
+  const Handle(Geom_BSplineSurface) bs = Handle(Geom_BSplineSurface)::DownCast(basis);
+  if (bs.IsNull()) return;
+  // The poles' plane, within the thickness allowed.
+  const gp_Trsf& placement = location.Transformation();
+  TColgp_Array1OfPnt poles(1, bs->NbUPoles() * bs->NbVPoles());
+  for (int i = 1, k = 1; i <= bs->NbUPoles(); ++i)
+    for (int j = 1; j <= bs->NbVPoles(); ++j) poles(k++) = bs->Pole(i, j).Transformed(placement);
+  const GProp_PEquation fit(poles, kFlatThickness * chordal);
+  if (!fit.IsPlanar()) return;
+  gp_XYZ normal = fit.Plane().Axis().Direction().XYZ();
+  // The orientation at the points of a grid over the face's box that lie on the face: one side of
+  // the plane at each (the side of the face's part of the sheet; beyond its outline the
+  // parametrisation may fold, no point of the face maps there).
+  const int n = kFlatGrid;
+  std::vector<gp_Pnt> at;
+  int side = 0;
+  BRepClass_FaceClassifier classifier;
+  const double uvTolerance = 1e-9 * std::max(uMax - uMin, vMax - vMin);
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const double u = uMin + (uMax - uMin) * i / n, v = vMin + (vMax - vMin) * j / n;
+      gp_Pnt p;
+      gp_Vec du, dv;
+      d1(u, v, p, du, dv);
+      at.push_back(p);
+      classifier.Perform(face_, gp_Pnt2d(u, v), uvTolerance);
+      if (classifier.State() == TopAbs_OUT) continue;
+      const gp_Vec c = du.Crossed(dv);
+      const double across = c.XYZ().Dot(normal);
+      if (!(std::abs(across) > kNoNormalSine * du.Magnitude() * dv.Magnitude())) return;  // a pole or a fold
+      const int here = across > 0 ? 1 : -1;
+      if (side != 0 && here != side) return;  // the parametrisation folds the sheet over
+      side = here;
+    }
+  }
+  if (side == 0) return;
+  if (side < 0) normal.Reverse();
+  const gp_XYZ origin = at[at.size() / 2].XYZ();
+  // The frame: x along Su at the middle, y across it (x, y and the normal right-handed, so the
+  // plane's orientation is UV's).
+  gp_Pnt p;
+  gp_Vec du, dv;
+  d1(0.5 * (uMin + uMax), 0.5 * (vMin + vMax), p, du, dv);
+  gp_XYZ x = du.XYZ() - normal * du.XYZ().Dot(normal);
+  if (!(x.Modulus() > 0)) return;
+  x.Normalize();
+  flatOrigin_ = origin, flatX_ = x, flatY_ = normal.Crossed(x);
+  Bnd_Box2d extent;
+  flatGrid_.clear();
+  for (const gp_Pnt& q : at) {
+    const gp_XYZ d = q.XYZ() - origin;
+    flatGrid_.push_back({d.Dot(flatX_), d.Dot(flatY_)});
+    extent.Add(gp_Pnt2d(flatGrid_.back().x, flatGrid_.back().y));
+  }
+  flatSize_ = std::sqrt(extent.SquareExtent());
+  if (!(flatSize_ > 0)) return;
+  flat_ = true;
+  // A plane has no creases, bends or sharp knots (a free-form one can have knots where the
+  // parametrisation breaks, its speed jumping; the surface does not turn there).
+  uCreases_.clear(), vCreases_.clear(), uBends_.clear(), vBends_.clear();
+  uSharpKnots_.clear(), vSharpKnots_.clear();
+  uPeriod_ = vPeriod_ = 0;
+}
+
+double SurfaceEval::flatNewton(const cet::Point2& q, double& u, double& v) const {
+  const double uLow = std::min(su0_, reachU0_), uHigh = std::max(su1_, reachU1_);
+  const double vLow = std::min(sv0_, reachV0_), vHigh = std::max(sv1_, reachV1_);
+  u = std::clamp(u, uLow, uHigh), v = std::clamp(v, vLow, vHigh);
+  gp_Pnt p;
+  gp_Vec du, dv;
+  d1(u, v, p, du, dv);
+  auto residual = [&](const gp_Pnt& s, double& rx, double& ry) {
+    const gp_XYZ d = s.XYZ() - flatOrigin_;
+    rx = q.x - d.Dot(flatX_), ry = q.y - d.Dot(flatY_);
+    return std::hypot(rx, ry);
+  };
+  double rx = 0, ry = 0;
+  double error = residual(p, rx, ry);
+  for (int it = 0; it < kFlatNewtonSteps && error > 1e-13 * flatSize_; ++it) {
+    const double a = du.XYZ().Dot(flatX_), b = dv.XYZ().Dot(flatX_), c = du.XYZ().Dot(flatY_),
+                 d = dv.XYZ().Dot(flatY_);
+    const double det = a * d - b * c;
+    if (!(std::abs(det) > 0)) break;
+    double stepU = (rx * d - b * ry) / det, stepV = (a * ry - c * rx) / det;
+    // Shortened to stay inside the box, in the same direction (clamping each parameter on its own
+    // turned steps along the box's side, where they stalled).
+    double keep = 1;
+    if (u + stepU > uHigh) keep = std::min(keep, (uHigh - u) / stepU);
+    if (u + stepU < uLow) keep = std::min(keep, (uLow - u) / stepU);
+    if (v + stepV > vHigh) keep = std::min(keep, (vHigh - v) / stepV);
+    if (v + stepV < vLow) keep = std::min(keep, (vLow - v) / stepV);
+    stepU *= std::max(keep, 0.0), stepV *= std::max(keep, 0.0);
+    bool better = false;
+    for (double f = 1; f > 1e-6 && !better; f *= 0.5) {  // halved until the residual falls
+      const double nu = std::clamp(u + f * stepU, uLow, uHigh), nv = std::clamp(v + f * stepV, vLow, vHigh);
+      gp_Pnt np;
+      gp_Vec ndu, ndv;
+      d1(nu, nv, np, ndu, ndv);
+      double nrx = 0, nry = 0;
+      const double e = residual(np, nrx, nry);
+      if (e < error) u = nu, v = nv, du = ndu, dv = ndv, rx = nrx, ry = nry, error = e, better = true;
+    }
+    if (!better) break;
+  }
+  return error;
+}
+
+void SurfaceEval::flatUnscaled(const cet::Point2& q, double& u, double& v, const double* bu, const double* bv,
+                               const double* bw, int n) const {
+  const double enough = 1e-9 * flatSize_;
+  double error = HUGE_VAL;
+  if (bu) {
+    u = 0, v = 0;
+    for (int i = 0; i < n; ++i) u += bw[i] * bu[i], v += bw[i] * bv[i];
+    error = flatNewton(q, u, v);
+    // Then from the corners it blends: where the parametrisation is squeezed (a 1e-6 step of u
+    // moving the point 5% of the face's size), the blend of their parameters can lie in another
+    // part of the face than the point.
+    for (int i = 0; i < n && error > enough; ++i) {
+      if (!(bw[i] > 0)) continue;
+      double cu = bu[i], cv = bv[i];
+      const double e = flatNewton(q, cu, cv);
+      if (e < error) error = e, u = cu, v = cv;
+    }
+    if (error <= enough) return;
+  }
+  // From the grid point nearest q.
+  std::size_t nearest = 0;
+  double least = HUGE_VAL;
+  for (std::size_t k = 0; k < flatGrid_.size(); ++k) {
+    const double d = std::hypot(flatGrid_[k].x - q.x, flatGrid_[k].y - q.y);
+    if (d < least) least = d, nearest = k;
+  }
+  const int i = static_cast<int>(nearest) / (kFlatGrid + 1), j = static_cast<int>(nearest) % (kFlatGrid + 1);
+  double gu = uMin + (uMax - uMin) * i / kFlatGrid, gv = vMin + (vMax - vMin) * j / kFlatGrid;
+  if (flatNewton(q, gu, gv) < error || !bu) u = gu, v = gv;
 }
 
 void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double, double>>& uneven) const {
