@@ -115,9 +115,8 @@ class SurfaceEval {
   bool linear() const { return !flat_ && uAxis_.slope.size() == 1 && vAxis_.slope.size() == 1; }
   // A B-spline face whose poles lie within kFlatThickness of the final chordal tolerance of one plane
   // (with positive weights the surface lies in their convex hull: it is that plane, for the
-  // tolerance), not periodic, and whose parametrisation keeps its orientation over the face (Su x Sv
-  // on one side of the plane, never of no area, at the points of a grid over the face's box that
-  // lie on the face; beyond its outline the sheet may fold): its scaled plane is the
+  // tolerance), not periodic, and whose parametrisation keeps its orientation over the face's box
+  // (Su x Sv on one side of the plane, never of no area, at the points of a grid): its scaled plane is the
   // plane itself, x and y the coordinates of S(u, v) in an orthonormal frame there, and unscaled()
   // inverts that by Newton steps. The triangulation is then one of the face's own outline: flat in
   // 3D as it is in the scaled plane, whatever the parametrisation does. Separate scales per
