@@ -772,6 +772,12 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
   }
 
   static const double kCentroid[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  // A flat face's triangle lies on its plane inside the outline, which the surface covers within
+  // the poles' distance from the plane on either side (SurfaceEval::flat): no samples to take.
+  if (eval_.flat() && !c.collapsed) {
+    r.deviation = static_cast<float>(2 * eval_.flatThickness());
+    return;
+  }
   if (exactDeviation_ && !c.collapsed) {
     // The deviation in closed form, split where it peaks (inside: the centroid; an edge: its
     // midpoint). The corresponding-point guard (below) at the centroid alone: a triangle whose UV

@@ -316,12 +316,15 @@ void SurfaceEval::findFlatPlane(double chordal) {
   const int n = kFlatGrid;
   std::vector<gp_Pnt> at;
   int side = 0;
+  double suLow = HUGE_VAL, suHigh = 0, svLow = HUGE_VAL, svHigh = 0;
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
       gp_Pnt p;
       gp_Vec du, dv;
       d1(uMin + (uMax - uMin) * i / n, vMin + (vMax - vMin) * j / n, p, du, dv);
       at.push_back(p);
+      suLow = std::min(suLow, du.Magnitude()), suHigh = std::max(suHigh, du.Magnitude());
+      svLow = std::min(svLow, dv.Magnitude()), svHigh = std::max(svHigh, dv.Magnitude());
       const gp_Vec c = du.Crossed(dv);
       const double across = c.XYZ().Dot(normal);
       if (!(std::abs(across) > kNoNormalSine * du.Magnitude() * dv.Magnitude())) return;  // a pole or a fold
@@ -331,8 +334,15 @@ void SurfaceEval::findFlatPlane(double chordal) {
     }
   }
   if (side == 0) return;
+  // A parametrisation close to uniform meshes as well in the scaled UV plane, and cheaper (the
+  // plane's points are surface evaluations, its inverse Newton steps: bearing's 28 flat faces,
+  // meshed the same either way, took 8% longer in their plane).
+  if (suHigh <= kFlatSpeedSpread * suLow && svHigh <= kFlatSpeedSpread * svLow) return;
   if (side < 0) normal.Reverse();
   const gp_XYZ origin = at[at.size() / 2].XYZ();
+  double thickness = 0;  // from the plane through the middle point
+  for (int k = poles.Lower(); k <= poles.Upper(); ++k)
+    thickness = std::max(thickness, std::abs((poles(k).XYZ() - origin).Dot(normal)));
   // The frame: x along Su at the middle, y across it (x, y and the normal right-handed, so the
   // plane's orientation is UV's).
   gp_Pnt p;
@@ -352,6 +362,7 @@ void SurfaceEval::findFlatPlane(double chordal) {
   flatSize_ = std::sqrt(extent.SquareExtent());
   if (!(flatSize_ > 0)) return;
   flat_ = true;
+  flatThickness_ = thickness;
   // A plane has no creases, bends or sharp knots (a free-form one can have knots where the
   // parametrisation breaks, its speed jumping; the surface does not turn there).
   uCreases_.clear(), vCreases_.clear(), uBends_.clear(), vBends_.clear();
@@ -369,7 +380,7 @@ double SurfaceEval::flatNewton(const cet::Point2& q, double& u, double& v) const
   auto residual = [&](const gp_Pnt& s, double& rx, double& ry) {
     const gp_XYZ d = s.XYZ() - flatOrigin_;
     rx = q.x - d.Dot(flatX_), ry = q.y - d.Dot(flatY_);
-    return std::hypot(rx, ry);
+    return std::sqrt(rx * rx + ry * ry);
   };
   double rx = 0, ry = 0;
   double error = residual(p, rx, ry);
@@ -420,17 +431,22 @@ void SurfaceEval::flatUnscaled(const cet::Point2& q, double& u, double& v, const
       if (e < error) error = e, u = cu, v = cv;
     }
     if (error <= enough) return;
+  } else {
+    // From where the scales per direction put it (near on a parametrisation close to affine).
+    u = uAxis_.inverse(q.x), v = vAxis_.inverse(q.y);
+    error = flatNewton(q, u, v);
+    if (error <= enough) return;
   }
   // From the grid point nearest q.
   std::size_t nearest = 0;
   double least = HUGE_VAL;
   for (std::size_t k = 0; k < flatGrid_.size(); ++k) {
-    const double d = std::hypot(flatGrid_[k].x - q.x, flatGrid_[k].y - q.y);
-    if (d < least) least = d, nearest = k;
+    const double dx = flatGrid_[k].x - q.x, dy = flatGrid_[k].y - q.y;
+    if (dx * dx + dy * dy < least) least = dx * dx + dy * dy, nearest = k;
   }
   const int i = static_cast<int>(nearest) / (kFlatGrid + 1), j = static_cast<int>(nearest) % (kFlatGrid + 1);
   double gu = uMin + (uMax - uMin) * i / kFlatGrid, gv = vMin + (vMax - vMin) * j / kFlatGrid;
-  if (flatNewton(q, gu, gv) < error || !bu) u = gu, v = gv;
+  if (flatNewton(q, gu, gv) < error) u = gu, v = gv;
 }
 
 void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double, double>>& uneven) const {

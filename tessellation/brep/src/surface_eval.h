@@ -125,12 +125,14 @@ class SurfaceEval {
   // refining them made more (a sheet flat within 2e-9 of its size: 375788 triangles on its first
   // level, 53756 of them flipped). The edge table keeps uAxis() and vAxis().
   bool flat() const { return flat_; }
+  double flatThickness() const { return flatThickness_; }  // the poles' largest distance from the plane
   // Makes the face flat() if it is, for that chordal tolerance (the constructor calls it with its
   // own). The measure calls it too: on a flat face the triangles are straight in the plane, where
   // their points' parameters are the start from which projections find the foot (from the UV
   // interpolation, on such a parametrisation, neither they nor grids over the triangle's UV did).
   void detectFlat(double chordal);
   static constexpr double kFlatThickness = 0.01;
+  static constexpr double kFlatSpeedSpread = 4;  // |Su| or |Sv| over the grid: the slowest to the fastest
   static constexpr int kFlatGrid = 16;  // cells each way of the orientation check and Newton's start points
   // The two directions' scalings (the edge discretisation works in the same plane).
   const UvAxis& uAxis() const { return uAxis_; }
@@ -359,6 +361,7 @@ class SurfaceEval {
   bool flat_ = false;
   gp_XYZ flatOrigin_, flatX_, flatY_;
   double flatSize_ = 0;                // the face's extent in the plane
+  double flatThickness_ = 0;
   std::vector<cet::Point2> flatGrid_;  // flatScaled at (kFlatGrid + 1)^2 points of the face's box
 
   // Evaluation: B-spline faces go to the direct evaluator (bspline_direct.h) for every point; it
