@@ -115,15 +115,18 @@ class SurfaceEval {
   bool linear() const { return !flat_ && uAxis_.slope.size() == 1 && vAxis_.slope.size() == 1; }
   // A B-spline face whose poles lie within kFlatThickness of the final chordal tolerance of one plane
   // (with positive weights the surface lies in their convex hull: it is that plane, for the
-  // tolerance), not periodic, and whose parametrisation keeps its orientation over the face's box
-  // (Su x Sv on one side of the plane, never of no area, at the points of a grid): its scaled plane is the
-  // plane itself, x and y the coordinates of S(u, v) in an orthonormal frame there, and unscaled()
-  // inverts that by Newton steps. The triangulation is then one of the face's own outline: flat in
-  // 3D as it is in the scaled plane, whatever the parametrisation does. Separate scales per
-  // direction cannot follow a parametrisation squeezed unevenly by its weights (speeds 1e4 apart
-  // across a flat fuzzed sheet): triangles well shaped in the scaled plane overlapped in 3D, and
-  // refining them made more (a sheet flat within 2e-9 of its size: 375788 triangles on its first
-  // level, 53756 of them flipped). The edge table keeps uAxis() and vAxis().
+  // tolerance), not periodic, whose parametrisation keeps its orientation over the face's box (Su x
+  // Sv on one side of the plane, never of no area, at the points of a grid) and is uneven there
+  // (|Su| or |Sv| more than kFlatSpeedSpread apart): its scaled plane is the plane itself, x and y
+  // the coordinates of S(u, v) in an orthonormal frame there, and unscaled() inverts that by Newton
+  // steps. The triangulation is then one of the face's own outline: flat in 3D as it is in the
+  // scaled plane, whatever the parametrisation does. Separate scales per direction cannot follow a
+  // parametrisation squeezed unevenly by its weights (speeds 1e4 apart across a flat fuzzed sheet):
+  // triangles well shaped in the scaled plane overlapped in 3D, and refining them made more (a
+  // sheet flat within 2e-9 of its size: 375788 triangles on its first level, 53756 of them
+  // flipped). The edge table keeps uAxis() and vAxis(): where a boundary's pcurves cross, the
+  // crossings it separates in that plane may be left crossing in this one (the face then falls
+  // back, or shows no triangles, and says why).
   bool flat() const { return flat_; }
   double flatThickness() const { return flatThickness_; }  // the poles' largest distance from the plane
   // Makes the face flat() if it is, for that chordal tolerance (the constructor calls it with its
