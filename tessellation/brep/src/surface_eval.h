@@ -353,8 +353,9 @@ class SurfaceEval {
     const gp_XYZ d = point(u, v).XYZ() - flatOrigin_;
     return {d.Dot(flatX_), d.Dot(flatY_)};
   }
-  // (u, v) with flatScaled(u, v) = q, by damped Newton steps from the UV blend of corners (bu, bv)
-  // with weights bw when given (n of them), else or where that fails, from the nearest grid point.
+  // (u, v) with flatScaled(u, v) = q, by damped Newton steps: from the UV blend of corners (bu, bv)
+  // with weights bw when given (n of them), then from each of those corners; else from the scaled
+  // axes' inverse; and where those fall short, from the nearest grid point. The closest found.
   void flatUnscaled(const cet::Point2& q, double& u, double& v, const double* bu = nullptr,
                     const double* bv = nullptr, const double* bw = nullptr, int n = 0) const;
   // Newton steps from (u, v) towards flatScaled(u, v) = q, each halved until it brings the point
