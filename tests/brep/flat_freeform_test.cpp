@@ -1,7 +1,8 @@
 // Flat free-form faces (SurfaceEval::flat()): a B-spline whose poles lie in one plane, within a
-// hundredth of the tolerance, and whose parametrisation keeps its orientation over the face, is
-// meshed in that plane: its scaled plane is the plane itself, so the triangulation is one of the
-// face's outline in 3D, whatever its weights do to the parametrisation.
+// hundredth of the tolerance, and whose parametrisation keeps its orientation over the face but is
+// uneven there (speeds 4x apart), is meshed in that plane: its scaled plane is the plane itself, so
+// the triangulation is one of the face's outline in 3D, whatever its weights do to the
+// parametrisation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,16 +22,17 @@
 namespace cetview::brep {
 namespace {
 
-// A rational bicubic patch over [0, 1]^2 on the plane z = 0, its poles a grid 3 x 3 (x from
-// `columns`), weights from 0.1 to 10; `lift` raises one inner pole off the plane.
-TopoDS_Face weightedSheet(const double columns[4], double lift = 0) {
+// A rational bicubic patch over [0, 1]^2 on the plane z = 0, its 4 x 4 poles at x from `columns`
+// and y = 0..3, weights from 0.1 to 10 (all 1 when not `weighted`); `lift` raises one inner pole
+// off the plane.
+TopoDS_Face weightedSheet(const double columns[4], double lift = 0, bool weighted = true) {
   TColgp_Array2OfPnt poles(1, 4, 1, 4);
   TColStd_Array2OfReal weights(1, 4, 1, 4);
   const double w[4][4] = {{1, 10, 0.1, 2}, {0.2, 5, 8, 0.1}, {3, 0.1, 0.5, 10}, {1, 4, 0.3, 1}};
   for (int i = 1; i <= 4; ++i) {
     for (int j = 1; j <= 4; ++j) {
       poles(i, j) = gp_Pnt(columns[i - 1], j - 1.0, i == 2 && j == 3 ? lift : 0.0);
-      weights(i, j) = w[i - 1][j - 1];
+      weights(i, j) = weighted ? w[i - 1][j - 1] : 1.0;
     }
   }
   TColStd_Array1OfReal knots(1, 2);
@@ -64,13 +66,15 @@ TEST(FlatFreeForm, ARationalSheetInAPlaneIsMeshedInThatPlane) {
 }
 
 // Not flat: poles off the plane by more than a hundredth of the tolerance, a sheet folding over
-// itself (its columns out of order), or no tolerance to judge by.
+// itself (its columns out of order), no tolerance to judge by, or a parametrisation close to
+// uniform (the same grid without weights: it meshes as well, and cheaper, in the scaled UV plane).
 TEST(FlatFreeForm, OnlyASheetFlatForTheToleranceAndUnfoldedIsFlat) {
   EXPECT_TRUE(SurfaceEval(weightedSheet(kColumns, 0.005 * kChordal), kChordal, 0.3).flat());
   EXPECT_FALSE(SurfaceEval(weightedSheet(kColumns, 0.02 * kChordal), kChordal, 0.3).flat());
   const double folded[4] = {0, 3, -1, 2};
   EXPECT_FALSE(SurfaceEval(weightedSheet(folded), kChordal, 0.3).flat());
   EXPECT_FALSE(SurfaceEval(weightedSheet(kColumns)).flat());
+  EXPECT_FALSE(SurfaceEval(weightedSheet(kColumns, 0, false), kChordal, 0.3).flat());
 }
 
 // The whole patch, meshed: its outline's four iso-lines are straight, so each level is two

@@ -367,7 +367,6 @@ void SurfaceEval::findFlatPlane(double chordal) {
   // parametrisation breaks, its speed jumping; the surface does not turn there).
   uCreases_.clear(), vCreases_.clear(), uBends_.clear(), vBends_.clear();
   uSharpKnots_.clear(), vSharpKnots_.clear();
-  uPeriod_ = vPeriod_ = 0;
 }
 
 double SurfaceEval::flatNewton(const cet::Point2& q, double& u, double& v) const {

@@ -137,7 +137,8 @@ class SurfaceEval {
   static constexpr double kFlatThickness = 0.01;
   static constexpr double kFlatSpeedSpread = 4;  // |Su| or |Sv| over the grid: the slowest to the fastest
   static constexpr int kFlatGrid = 16;  // cells each way of the orientation check and Newton's start points
-  // The two directions' scalings (the edge discretisation works in the same plane).
+  // The two directions' scalings (the edge discretisation works in their plane, also on a flat()
+  // face, whose mesher works in the face's own).
   const UvAxis& uAxis() const { return uAxis_; }
   const UvAxis& vAxis() const { return vAxis_; }
   // The UV of the point with weights w[0..n) of the corners (u[i], v[i]) in the scaled plane, where
