@@ -13,10 +13,6 @@
 #include <ostream>
 #include <string>
 
-#include <BRepTools.hxx>
-#include <BRep_Builder.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "brep/measure.h"
@@ -56,15 +52,6 @@ INSTANTIATE_TEST_SUITE_P(FuzzedFaces, UnevenRationalPatch,
 // but every Gauss-Newton and damped step also stepped across the seam into those spans, far from
 // the sample, and the distance stayed where it started. The measure also takes damped steps held
 // inside the face's parameter box, which slide along the seam instead.
-// The first face of a test data file, read as OpenCASCADE writes it.
-TopoDS_Face firstFace(const std::string& file) {
-  TopoDS_Shape shape;
-  BRep_Builder builder;
-  if (!BRepTools::Read(shape, (std::string(CETVIEW_BREP_TEST_DATA) + "/" + file).c_str(), builder)) return {};
-  TopExp_Explorer faces(shape, TopAbs_FACE);
-  return faces.More() ? TopoDS::Face(faces.Current()) : TopoDS_Face();
-}
-
 // The measure's reading of the triangle with these corner parameters (corners on the surface),
 // its finer seeds taken past `fineAbove`.
 double measuredTriangle(const SurfaceEval& eval, const double uv[6], double fineAbove = INFINITY) {
@@ -79,7 +66,7 @@ double measuredTriangle(const SurfaceEval& eval, const double uv[6], double fine
 
 // The same on the first face of a test data file.
 double measuredTriangle(const std::string& file, const double uv[6]) {
-  const TopoDS_Face face = firstFace(file);
+  const TopoDS_Face face = test::firstFace(file);
   EXPECT_FALSE(face.IsNull()) << file;
   if (face.IsNull()) return 1e300;
   return measuredTriangle(SurfaceEval(face), uv);
@@ -93,7 +80,7 @@ double measuredTriangle(const std::string& file, const double uv[6]) {
 // hung on rounding. A grid of step 1/400 over its (u, v) finds the surface within 1.75e-4 of every
 // sample. Past the tolerance the measure also seeds from a grid of step 1/64.
 TEST(WildWeights, ATriangleAcrossATinySpanReadsAlikeInEveryCornerOrder) {
-  const TopoDS_Face face = firstFace("wild_weights_across_a_tiny_span.brep");
+  const TopoDS_Face face = test::firstFace("wild_weights_across_a_tiny_span.brep");
   ASSERT_FALSE(face.IsNull());
   const SurfaceEval eval(face);
   const double corners[3][2] = {{0.067025128230357112, 96.700662441748761},
@@ -117,7 +104,7 @@ TEST(WildWeights, ATriangleAcrossATinySpanReadsAlikeInEveryCornerOrder) {
 // but the first corner, lie past the knot on the point, where no step moves along u: it read
 // 0.0085, 2.38x the level's tolerance of 0.00357.
 TEST(CollapsedPastAKnot, AZeroAreaTriangleAlongTheSideMeasuresOnTheSide) {
-  const TopoDS_Face face = firstFace("bilinear_collapsed_past_a_knot.brep");
+  const TopoDS_Face face = test::firstFace("bilinear_collapsed_past_a_knot.brep");
   ASSERT_FALSE(face.IsNull());
   const double uv[6] = {-999.99957156397556, -999.99900000000025, -999.99957188849032,
                         -999.99900000000025, -999.99950000000001, -999.99900000000014};
@@ -139,7 +126,7 @@ TEST(CollapsedPastAKnot, EveryLevelMeasuresWithinItsTolerance) {
 // derivative), and it read 0.0279, 4.37x level 7's tolerance of 0.0064. The measure now also
 // searches the line around the nearest seed by golden sections.
 TEST(CollapsedPastAKnot, AZeroAreaTriangleAlongTheSeamMeasuresOnTheSeam) {
-  const TopoDS_Face face = firstFace("seam_collapsed_past_a_knot.brep");
+  const TopoDS_Face face = test::firstFace("seam_collapsed_past_a_knot.brep");
   ASSERT_FALSE(face.IsNull());
   const double uv[6] = {-999.99899999999991, -999.99933354482209, -999.9989999999998,
                         -999.9989999999998,  -999.9989999999998,  -999.9994999999999};

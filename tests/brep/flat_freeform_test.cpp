@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
+#include <ostream>
 #include <vector>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -24,14 +26,16 @@ namespace {
 
 // A rational bicubic patch over [0, 1]^2 on the plane z = 0, its 4 x 4 poles at x from `columns`
 // and y = 0..3, weights from 0.1 to 10 (all 1 when not `weighted`); `lift` raises one inner pole
-// off the plane.
-TopoDS_Face weightedSheet(const double columns[4], double lift = 0, bool weighted = true) {
+// off the plane; with `poleRow` the first column's poles are one point (y = 1.5), the side u = 0
+// a pole.
+TopoDS_Face weightedSheet(const double columns[4], double lift = 0, bool weighted = true,
+                          bool poleRow = false) {
   TColgp_Array2OfPnt poles(1, 4, 1, 4);
   TColStd_Array2OfReal weights(1, 4, 1, 4);
   const double w[4][4] = {{1, 10, 0.1, 2}, {0.2, 5, 8, 0.1}, {3, 0.1, 0.5, 10}, {1, 4, 0.3, 1}};
   for (int i = 1; i <= 4; ++i) {
     for (int j = 1; j <= 4; ++j) {
-      poles(i, j) = gp_Pnt(columns[i - 1], j - 1.0, i == 2 && j == 3 ? lift : 0.0);
+      poles(i, j) = gp_Pnt(columns[i - 1], poleRow && i == 1 ? 1.5 : j - 1.0, i == 2 && j == 3 ? lift : 0.0);
       weights(i, j) = weighted ? w[i - 1][j - 1] : 1.0;
     }
   }
@@ -77,6 +81,21 @@ TEST(FlatFreeForm, OnlyASheetFlatForTheToleranceAndUnfoldedIsFlat) {
   EXPECT_FALSE(SurfaceEval(weightedSheet(kColumns, 0, false), kChordal, 0.3).flat());
 }
 
+// A flat sheet fanning from a pole row (a degenerate edge on the box's side, where Su x Sv is
+// nothing and its direction noise) is flat: the plane takes the row to one point as the surface
+// does, and the row makes the parametrisation uneven (a sheet of even weights is flat too). Not
+// flat: the same sheet folded over, or with flat faces switched off (the tests of the scaled UV
+// plane's handling of such sheets).
+TEST(FlatFreeForm, ASheetFanningFromAPoleRowIsFlat) {
+  EXPECT_TRUE(SurfaceEval(weightedSheet(kColumns, 0, true, true), kChordal, 0.3).flat());
+  EXPECT_TRUE(SurfaceEval(weightedSheet(kColumns, 0, false, true), kChordal, 0.3).flat());
+  const double folded[4] = {0, 3, -1, 2};
+  EXPECT_FALSE(SurfaceEval(weightedSheet(folded, 0, false, true), kChordal, 0.3).flat());
+  SurfaceEval::enableFlatFaces(false);
+  EXPECT_FALSE(SurfaceEval(weightedSheet(kColumns, 0, false, true), kChordal, 0.3).flat());
+  SurfaceEval::enableFlatFaces(true);
+}
+
 // The whole patch, meshed: its outline's four iso-lines are straight, so each level is two
 // triangles, within the tolerance and facing the surface's way.
 TEST(FlatFreeForm, AWeightedFlatPatchTakesItsOutlineOnly) {
@@ -107,6 +126,56 @@ TEST(FlatFreeForm, AFlatSheetWithExtremeWeightsIsMeshedAsItsOutline) {
     EXPECT_LE(q.triangles, 8u);
   }
 }
+
+// Fuzzed flat B-spline sheets fanning from a pole (face_fuzz wrote them; the scaled UV plane's
+// handling of the first four is tested in collapsed_surface_test.cpp with flat faces off). In the
+// scaled UV plane, their parametrisation running down to nothing along the pole row, triangles
+// fanning into the pole flipped or crowded; in their plane each level is a few triangles of the
+// outline, none flipped:
+// - flat_sheet_fanning_from_a_pole.brep (seed 808, input 64): 30, 41 and 55 triangles, 2 flipped
+//   by the pole corner on each level; now 8, 9 and 13.
+// - sheet_from_pole_corner.brep: 20 to 70 triangles, 1 flipped on level 1; now 4 to 16.
+// - sheet_bulging_from_a_pole_corner.brep: 28 to 82, 1 flipped on levels 0 to 3; now 4 to 16.
+// - fan_onto_straight_side.brep: 48 to 112; now 26 to 32.
+// - plane_fanning_from_a_pole_corner.brep (final level alone): 83; now 11.
+struct PoleSheet {
+  const char* file;
+  double deflection, angleDeg;
+  bool progressive;
+  std::size_t mostTriangles;  // half what the scaled UV plane took on the last level
+};
+void PrintTo(const PoleSheet& sheet, std::ostream* os) {
+  *os << sheet.file;
+}
+
+class FlatSheetFanningFromAPole : public testing::TestWithParam<PoleSheet> {};
+
+TEST_P(FlatSheetFanningFromAPole, IsMeshedInItsPlane) {
+  const PoleSheet& sheet = GetParam();
+  auto model = test::loadTestData(sheet.file);
+  ASSERT_TRUE(model);
+  MeshParams params = test::relative(sheet.deflection, sheet.angleDeg);
+  params.progressive = sheet.progressive;
+  auto t = test::tessellate(*model, params);
+  ASSERT_TRUE(t);
+  EXPECT_TRUE(SurfaceEval(test::firstFace(sheet.file), t->schedule().back().chordal, 0.3).flat());
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  for (const FaceQuality& q : levels) {
+    EXPECT_EQ(q.flipped, 0u);
+    EXPECT_EQ(q.degenerate, 0u);
+  }
+  EXPECT_LE(levels.back().triangles, sheet.mostTriangles);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    FuzzedFaces, FlatSheetFanningFromAPole,
+    testing::Values(
+        PoleSheet{"flat_sheet_fanning_from_a_pole.brep", 0.0029994581136934839, 13.713054093232623, true, 27},
+        PoleSheet{"sheet_from_pole_corner.brep", 0.00037327612484975826, 49.29289692530709, true, 35},
+        PoleSheet{"sheet_bulging_from_a_pole_corner.brep", 0.00040839277467001951, 18.001602197299153, true,
+                  41},
+        PoleSheet{"fan_onto_straight_side.brep", 0.00079688600635591966, 26.06507972838941, true, 56},
+        PoleSheet{"plane_fanning_from_a_pole_corner.brep", 0.001, 21.082475013351644, false, 41}));
 
 }  // namespace
 }  // namespace cetview::brep

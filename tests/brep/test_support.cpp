@@ -11,7 +11,11 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepLib.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <Geom2d_Line.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 
 #include "brep/measure.h"
 #include "brep/mesh_check.h"
@@ -52,6 +56,14 @@ std::unique_ptr<Model> loadTestData(const std::string& file) {
   LoadResult r = loadModel(std::string(CETVIEW_BREP_TEST_DATA) + "/" + file);
   EXPECT_TRUE(r) << r.error;
   return std::move(r.model);
+}
+
+TopoDS_Face firstFace(const std::string& file) {
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  if (!BRepTools::Read(shape, (std::string(CETVIEW_BREP_TEST_DATA) + "/" + file).c_str(), builder)) return {};
+  TopExp_Explorer faces(shape, TopAbs_FACE);
+  return faces.More() ? TopoDS::Face(faces.Current()) : TopoDS_Face();
 }
 
 std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params, int lastLevel) {

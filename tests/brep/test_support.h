@@ -47,6 +47,8 @@ std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshPa
 
 // A model from tests/brep/data (inputs face_fuzz wrote); fails the test on a load error.
 std::unique_ptr<Model> loadTestData(const std::string& file);
+// The first face of a test data file, read as OpenCASCADE writes it (null if there is none).
+TopoDS_Face firstFace(const std::string& file);
 // Every level of every face (up to `lastLevel`; -1: all) on one thread; null, with a test failure,
 // on an error.
 std::unique_ptr<Tessellator> tessellate(const Model& model, const MeshParams& params, int lastLevel = -1);

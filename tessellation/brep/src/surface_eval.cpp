@@ -294,7 +294,13 @@ void SurfaceEval::detectFlat(double chordal) {
 }
 
 void SurfaceEval::findFlatPlane(double chordal) {
-  if (flat_ || !(chordal > 0) || !direct_ || uPeriodic_ || vPeriodic_ || !(uMax > uMin) || !(vMax > vMin))
+  if (flat_ || !flatFacesEnabled_.load(std::memory_order_relaxed) || !(chordal > 0) || !(uMax > uMin) ||
+      !(vMax > vMin))
+    return;
+  // A periodic face within one period (a whole period would bring its seam's two sides onto one
+  // line of the plane).
+  if ((uPeriodic_ && !(uMax - uMin < (1 - 1e-9) * surface_.UPeriod())) ||
+      (vPeriodic_ && !(vMax - vMin < (1 - 1e-9) * surface_.VPeriod())))
     return;
   TopLoc_Location location;
   Handle(Geom_Surface) basis = BRep_Tool::Surface(face_, location);
@@ -315,7 +321,11 @@ void SurfaceEval::findFlatPlane(double chordal) {
   // face, with OpenCASCADE's classifier, on the sample models' flat faces.)
   const int n = kFlatGrid;
   std::vector<gp_Pnt> at;
-  int side = 0;
+  struct Orientation {
+    double across, speeds;  // (Su x Sv) . normal and |Su| |Sv|
+    bool onBoxSide;
+  };
+  std::vector<Orientation> orientations;
   double suLow = HUGE_VAL, suHigh = 0, svLow = HUGE_VAL, svHigh = 0;
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
@@ -325,13 +335,23 @@ void SurfaceEval::findFlatPlane(double chordal) {
       at.push_back(p);
       suLow = std::min(suLow, du.Magnitude()), suHigh = std::max(suHigh, du.Magnitude());
       svLow = std::min(svLow, dv.Magnitude()), svHigh = std::max(svHigh, dv.Magnitude());
-      const gp_Vec c = du.Crossed(dv);
-      const double across = c.XYZ().Dot(normal);
-      if (!(std::abs(across) > kNoNormalSine * du.Magnitude() * dv.Magnitude())) return;  // a pole or a fold
-      const int here = across > 0 ? 1 : -1;
-      if (side != 0 && here != side) return;  // the parametrisation folds the sheet over
-      side = here;
+      orientations.push_back({du.Crossed(dv).XYZ().Dot(normal), du.Magnitude() * dv.Magnitude(),
+                              i == 0 || i == n || j == 0 || j == n});
     }
+  }
+  // Inside the box the normal must be there and on one side everywhere. On the box's sides, points
+  // where Su x Sv is next to nothing beside the grid's largest speeds are left out: a pole row (a
+  // degenerate edge, Su or Sv nothing there and its direction noise), which the plane takes to one
+  // point as the surface does. Such a row also makes the parametrisation uneven below: in the
+  // scaled UV plane the triangles fanning into it could flip (a fuzzed flat sheet fanning from a
+  // pole: two flipped at its pole corner on each level).
+  int side = 0;
+  for (const Orientation& o : orientations) {
+    if (o.onBoxSide && !(std::abs(o.across) > kNoNormalSine * suHigh * svHigh)) continue;
+    if (!(std::abs(o.across) > kNoNormalSine * o.speeds)) return;  // a pole or a fold inside
+    const int here = o.across > 0 ? 1 : -1;
+    if (side != 0 && here != side) return;  // the parametrisation folds the sheet over
+    side = here;
   }
   if (side == 0) return;
   // A parametrisation close to uniform meshes as well in the scaled UV plane, and cheaper (the

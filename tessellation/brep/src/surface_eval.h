@@ -3,6 +3,7 @@
 // thread: the adaptor caches B-spline spans.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -115,9 +116,10 @@ class SurfaceEval {
   bool linear() const { return !flat_ && uAxis_.slope.size() == 1 && vAxis_.slope.size() == 1; }
   // A B-spline face whose poles lie within kFlatThickness of the final chordal tolerance of one plane
   // (with positive weights the surface lies in their convex hull: it is that plane, for the
-  // tolerance), not periodic, whose parametrisation keeps its orientation over the face's box (Su x
-  // Sv on one side of the plane, never of no area, at the points of a grid) and is uneven there
-  // (|Su| or |Sv| more than kFlatSpeedSpread apart): its scaled plane is the plane itself, x and y
+  // tolerance), within one period where periodic, whose parametrisation keeps its orientation over
+  // the face's box (Su x Sv on one side of the plane, never of no area, at the points of a grid; a
+  // pole row on the box's side excepted) and is uneven there (|Su| or |Sv| more than
+  // kFlatSpeedSpread apart, as by a pole row): its scaled plane is the plane itself, x and y
   // the coordinates of S(u, v) in an orthonormal frame there, and unscaled() inverts that by Newton
   // steps. The triangulation is then one of the face's own outline: flat in 3D as it is in the
   // scaled plane, whatever the parametrisation does. Separate scales per direction cannot follow a
@@ -134,6 +136,9 @@ class SurfaceEval {
   // their points' parameters are the start from which projections find the foot (from the UV
   // interpolation, on such a parametrisation, neither they nor grids over the triangle's UV did).
   void detectFlat(double chordal);
+  // Tests only: with it off no face is flat(). The tests of the scaled UV plane's handling of
+  // fuzzed flat sheets fanning from a pole (meshed in their plane since) keep it that way.
+  static void enableFlatFaces(bool on) { flatFacesEnabled_.store(on, std::memory_order_relaxed); }
   static constexpr double kFlatThickness = 0.01;
   static constexpr double kFlatSpeedSpread = 4;  // |Su| or |Sv| over the grid: the slowest to the fastest
   static constexpr int kFlatGrid = 16;  // cells each way of the orientation check and Newton's start points
@@ -364,6 +369,7 @@ class SurfaceEval {
   double flatNewton(const cet::Point2& q, double& u, double& v) const;
   static constexpr int kFlatNewtonSteps = 50;
   bool flat_ = false;
+  static inline std::atomic<bool> flatFacesEnabled_{true};
   gp_XYZ flatOrigin_, flatX_, flatY_;
   double flatSize_ = 0;                // the face's extent in the plane
   double flatThickness_ = 0;
