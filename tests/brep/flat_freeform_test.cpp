@@ -177,5 +177,88 @@ INSTANTIATE_TEST_SUITE_P(
         PoleSheet{"fan_onto_straight_side.brep", 0.00079688600635591966, 26.06507972838941, true, 56},
         PoleSheet{"plane_fanning_from_a_pole_corner.brep", 0.001, 21.082475013351644, false, 41}));
 
+// The first face of a fuzzed flat sheet (tests/brep/data), tessellated: its status and per-level
+// quality, each level within its tolerance; whether the face is flat() for that tolerance.
+struct FlatSheetRun {
+  FaceStatus status = FaceStatus::kPending;
+  std::vector<FaceQuality> levels;
+  bool flat = false;
+};
+FlatSheetRun tessellateSheet(const char* file, double deflection, double angleDeg) {
+  FlatSheetRun run;
+  auto model = test::loadTestData(file);
+  if (!model) return run;
+  auto t = test::tessellate(*model, test::relative(deflection, angleDeg));
+  if (!t) return run;
+  run.status = t->report(0).status;
+  run.levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  run.flat = SurfaceEval(test::firstFace(file), t->schedule().back().chordal, 0.3).flat();
+  return run;
+}
+
+// flat_bilinear_sheet_with_a_pole_edge.brep (seed 2323, input 219): a bilinear sheet whose side
+// u = umin is a pole, the rest a triangle in its plane. The degenerate edge's two ends, one point
+// in the plane but for rounding, made boundary segments crossing at the pole and the face fell
+// back to BRepMesh; the edge is now that one point: one triangle a level (11 to 21 in the scaled
+// UV plane).
+TEST(FlatFreeForm, APoleEdgeIsOnePointOfItsOutline) {
+  const FlatSheetRun run = tessellateSheet("flat_bilinear_sheet_with_a_pole_edge.brep",
+                                           0.00031872078866525794, 19.574349584191651);
+  EXPECT_TRUE(run.flat);
+  EXPECT_EQ(run.status, FaceStatus::kOk);
+  ASSERT_EQ(run.levels.size(), 6u);
+  for (const FaceQuality& q : run.levels) {
+    EXPECT_EQ(q.triangles, 1u);
+    EXPECT_EQ(q.flipped, 0u);
+  }
+}
+
+// flat_sheet_across_from_its_planes_origin.brep (seed 606, input 36): a flat sheet fanning from a
+// pole whose boundary points across from the plane's origin had a coordinate of 1e-52 there,
+// below what the triangulator takes (the face fell back to BRepMesh); rounding noise is now zero:
+// 5 and 7 triangles (11 and 15 in the scaled UV plane).
+TEST(FlatFreeForm, RoundingNoiseAtThePlanesOriginIsZero) {
+  const FlatSheetRun run = tessellateSheet("flat_sheet_across_from_its_planes_origin.brep",
+                                           0.0060887389133381287, 43.187380788891431);
+  EXPECT_TRUE(run.flat);
+  EXPECT_EQ(run.status, FaceStatus::kOk);
+  ASSERT_EQ(run.levels.size(), 2u);
+  for (const FaceQuality& q : run.levels) {
+    EXPECT_LE(q.triangles, 8u);
+    EXPECT_EQ(q.flipped, 0u);
+  }
+}
+
+// flat_sheet_whose_chords_cross_in_its_plane.brep (seed 909, input 292): a flat rational sheet
+// whose first u span, a millionth wide, moves a point 3e8 times faster than the rest. Its boundary
+// chords, placed by the edge table in the scaled UV plane, cross in the flat plane: the face fell
+// back to BRepMesh there. A flat face whose domain fails in its plane is meshed in the scaled UV
+// plane instead, as before flat faces.
+TEST(FlatFreeForm, AFlatFaceWhoseBoundaryCrossesInItsPlaneIsMeshedInTheScaledPlane) {
+  const FlatSheetRun run = tessellateSheet("flat_sheet_whose_chords_cross_in_its_plane.brep",
+                                           0.005014778715107312, 10.525597009231708);
+  EXPECT_TRUE(run.flat);
+  EXPECT_EQ(run.status, FaceStatus::kOk);
+  ASSERT_EQ(run.levels.size(), 2u);
+  EXPECT_EQ(run.levels.back().degenerate, 0u);
+}
+
+// flat_sheet_whose_coarsest_chords_cross_in_its_plane.brep (seed 808, input 123): a flat bilinear
+// rational sheet with a hole, its speeds up to 1e4 apart. Level 0's boundary crosses itself in the
+// plane, the finer levels' do not. Kept in the scaled UV plane after level 0, its refinement ran to
+// the work bound on level 2 (106476 triangles, 15668 flipped); back in the plane from level 1 on,
+// 22 to 58 triangles, none flipped.
+TEST(FlatFreeForm, AFlatFaceReturnsToItsPlaneWhereItsBoundaryNoLongerCrosses) {
+  const FlatSheetRun run = tessellateSheet("flat_sheet_whose_coarsest_chords_cross_in_its_plane.brep",
+                                           0.00019265448580190577, 31.447165636682691);
+  EXPECT_TRUE(run.flat);
+  EXPECT_EQ(run.status, FaceStatus::kOk);
+  ASSERT_EQ(run.levels.size(), 7u);
+  for (std::size_t k = 1; k < run.levels.size(); ++k) {
+    EXPECT_LE(run.levels[k].triangles, 100u) << "level " << k;
+    EXPECT_EQ(run.levels[k].flipped, 0u) << "level " << k;
+  }
+}
+
 }  // namespace
 }  // namespace cetview::brep

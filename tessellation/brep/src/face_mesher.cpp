@@ -315,17 +315,25 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
       }
     }
     // Degenerate edges (poles, apexes) belong to this face alone: split them so their segments are
-    // about as long in scaled UV as the loop's others (poleSegments).
+    // about as long in scaled UV as the loop's others (poleSegments). On a flat face the plane takes
+    // the whole edge to one point, as the surface does: the edge is that point alone, which the
+    // junctions below share with the edges on either side (its ends, rounding apart there, made
+    // boundary segments crossing at the pole).
     const double typical = segmentCount ? lengthSum / static_cast<double>(segmentCount) : 0.0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const LoopEdge& le = loop[i];
       if (!le.degenerated) continue;
       const gp_Pnt2d a = le.pcurve->Value(le.pcurveFirst).Translated(le.shift);
+      OccPoints& op = occPoints[l][i];
+      if (eval_.flat()) {
+        op.uv.push_back(a);
+        op.p.push_back(le.pole);
+        continue;
+      }
       const gp_Pnt2d b = le.pcurve->Value(le.pcurveLast).Translated(le.shift);
       const cet::Point2 sa = scaled(a.X(), a.Y()), sb = scaled(b.X(), b.Y());
       const double len = std::hypot(sb.x - sa.x, sb.y - sa.y);
       const int n = poleSegments(len, typical);
-      OccPoints& op = occPoints[l][i];
       for (int j = 0; j <= n; ++j) {
         const double t = le.pcurveFirst + (le.pcurveLast - le.pcurveFirst) * j / n;
         op.uv.push_back(le.pcurve->Value(t).Translated(le.shift));
@@ -453,6 +461,22 @@ bool FaceMesher::buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std:
   }
   boundaryLevel_ = k;
   return true;
+}
+
+bool FaceMesher::buildDomainFlatOrScaled(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
+                                         const std::atomic<bool>* cancel, bool& cancelled) {
+  const std::size_t repairCount = repairs_.size();
+  const bool wasRepaired = repaired_;
+  flatRetry_ = false;
+  const bool ok = buildDomain(k, edges, mesh, problem, cancel, cancelled);
+  if (ok || cancelled || !eval_.flat()) return ok;
+  abandonBuild(mesh);
+  repairs_.resize(repairCount);
+  repaired_ = wasRepaired;
+  problem.clear();
+  ownEval_->useFlat(false);
+  flatRetry_ = true;
+  return buildDomain(k, edges, mesh, problem, cancel, cancelled);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -2142,7 +2166,12 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
   try {
     bool ok = true, cancelled = false;
     if (!cdt_) {
-      ok = buildDomain(k, edges, mesh, problem, cancel, cancelled);
+      ok = buildDomainFlatOrScaled(k, edges, mesh, problem, cancel, cancelled);
+    } else if (boundaryLevel_ < k && flatRetry_) {
+      // An earlier level's domain failed in the flat plane: this level's may not.
+      ownEval_->useFlat(true);
+      ok = buildDomainFlatOrScaled(k, edges, mesh, problem, cancel, cancelled);
+      refinementStopped_ = false;
     } else if (boundaryLevel_ < k) {
       ok = refineBoundary(k, edges, mesh, problem, cancel, cancelled);
       if (cancelled) return FaceStatus::kCancelled;  // the next call goes on where it stopped
@@ -2150,7 +2179,7 @@ FaceStatus FaceMesher::advance(int k, const Level& level, const EdgeTable& edges
         repairs_.push_back("rebuilt at level " + std::to_string(k) + ": " + problem);
         repaired_ = true;
         problem.clear();
-        ok = buildDomain(k, edges, mesh, problem, cancel, cancelled);
+        ok = buildDomainFlatOrScaled(k, edges, mesh, problem, cancel, cancelled);
         // The interior a stopped refinement left is gone with the old domain: the new one is refined
         // (bounded as any level). Kept stopped, a fuzzed face rebuilt after its level 1 stopped at
         // the pass bound showed its bare boundary triangulation on the levels after, 6.9x to 23.5x

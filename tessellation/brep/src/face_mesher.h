@@ -95,6 +95,13 @@ class FaceMesher {
   // (abandonBuild() discards it).
   bool buildDomain(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
                    const std::atomic<bool>* cancel, bool& cancelled);
+  // buildDomain(); on a flat face (SurfaceEval::flat) whose domain fails in its plane, again in the
+  // scaled UV plane, and the next level rebuilds it (flatRetry_), in the plane if it works there.
+  // Edges leaving a vertex close together in 3D may have chords crossing there, split apart in UV
+  // (the edge table discretises them in the scaled UV plane): such a face meshed in that plane
+  // before flat faces, and fell back to BRepMesh in its own; a finer level's chords may not cross.
+  bool buildDomainFlatOrScaled(int k, const EdgeTable& edges, FaceMesh& mesh, std::string& problem,
+                               const std::atomic<bool>* cancel, bool& cancelled);
   // Drops a cancelled build: its vertices (appended from base_) and its triangulation. The next
   // advance() builds the domain again, as an uninterrupted build would have.
   FaceStatus abandonBuild(FaceMesh& mesh);
@@ -114,6 +121,7 @@ class FaceMesher {
   // Interior refinement of level `levelIndex` to its tolerances; false when cancelled. Stops (and
   // sets refinementStopped_) past refinePointBound() new points.
   bool refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
+  bool flatRetry_ = false;          // this level's domain failed in the flat plane: the next tries it again
   bool refinementStopped_ = false;  // a level's refinement did not converge: later levels keep its interior
   int refineLevel_ = -1;            // the level refine() last ran, and its triangulator's points before it
   std::size_t refineStart_ = 0;

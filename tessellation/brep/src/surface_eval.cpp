@@ -381,7 +381,7 @@ void SurfaceEval::findFlatPlane(double chordal) {
   }
   flatSize_ = std::sqrt(extent.SquareExtent());
   if (!(flatSize_ > 0)) return;
-  flat_ = true;
+  flat_ = flatFound_ = true;
   flatThickness_ = thickness;
   // A plane has no creases, bends or sharp knots (a free-form one can have knots where the
   // parametrisation breaks, its speed jumping; the surface does not turn there).

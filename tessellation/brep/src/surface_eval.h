@@ -136,6 +136,11 @@ class SurfaceEval {
   // their points' parameters are the start from which projections find the foot (from the UV
   // interpolation, on such a parametrisation, neither they nor grids over the triangle's UV did).
   void detectFlat(double chordal);
+  // A mesher whose domain failed in the flat plane meshes that level in the scaled UV plane
+  // (useFlat(false)) and tries the plane again on its next (useFlat(true): flat again if the face
+  // was). The creases, bends and sharp knots stay cleared: the surface is a plane for the
+  // tolerance, it turns nowhere, and the edge table was told so.
+  void useFlat(bool on) { flat_ = on && flatFound_; }
   // Tests only: with it off no face is flat(). The tests of the scaled UV plane's handling of
   // fuzzed flat sheets fanning from a pole (meshed in their plane since) keep it that way.
   static void enableFlatFaces(bool on) { flatFacesEnabled_.store(on, std::memory_order_relaxed); }
@@ -357,7 +362,10 @@ class SurfaceEval {
   void findFlatPlane(double chordal);
   cet::Point2 flatScaled(double u, double v) const {
     const gp_XYZ d = point(u, v).XYZ() - flatOrigin_;
-    return {d.Dot(flatX_), d.Dot(flatY_)};
+    // Rounding noise next to the origin (1e-52 at a point across from it) is zero: the
+    // triangulator takes no coordinates that small.
+    auto coordinate = [this](double c) { return std::abs(c) > 1e-30 * flatSize_ ? c : 0.0; };
+    return {coordinate(d.Dot(flatX_)), coordinate(d.Dot(flatY_))};
   }
   // (u, v) with flatScaled(u, v) = q, by damped Newton steps: from the UV blend of corners (bu, bv)
   // with weights bw when given (n of them), then from each of those corners; else from the scaled
@@ -369,6 +377,7 @@ class SurfaceEval {
   double flatNewton(const cet::Point2& q, double& u, double& v) const;
   static constexpr int kFlatNewtonSteps = 50;
   bool flat_ = false;
+  bool flatFound_ = false;  // the plane was found (flat_ is whether it is in use)
   static inline std::atomic<bool> flatFacesEnabled_{true};
   gp_XYZ flatOrigin_, flatX_, flatY_;
   double flatSize_ = 0;                // the face's extent in the plane
