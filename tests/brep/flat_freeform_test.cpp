@@ -138,6 +138,9 @@ TEST(FlatFreeForm, AFlatSheetWithExtremeWeightsIsMeshedAsItsOutline) {
 // - sheet_bulging_from_a_pole_corner.brep: 28 to 82, 1 flipped on levels 0 to 3; now 4 to 16.
 // - fan_onto_straight_side.brep: 48 to 112; now 26 to 32.
 // - plane_fanning_from_a_pole_corner.brep (final level alone): 83; now 11.
+// - flat_periodic_sheet_within_one_period.brep (seed 808, input 167): periodic in u, the face over
+//   half its period (flat within one period, where the plane is one-to-one): 34 to 93 triangles,
+//   3 to 5 flipped on each level; now 8 to 23.
 struct PoleSheet {
   const char* file;
   double deflection, angleDeg;
@@ -175,7 +178,9 @@ INSTANTIATE_TEST_SUITE_P(
         PoleSheet{"sheet_bulging_from_a_pole_corner.brep", 0.00040839277467001951, 18.001602197299153, true,
                   41},
         PoleSheet{"fan_onto_straight_side.brep", 0.00079688600635591966, 26.06507972838941, true, 56},
-        PoleSheet{"plane_fanning_from_a_pole_corner.brep", 0.001, 21.082475013351644, false, 41}));
+        PoleSheet{"plane_fanning_from_a_pole_corner.brep", 0.001, 21.082475013351644, false, 41},
+        PoleSheet{"flat_periodic_sheet_within_one_period.brep", 0.0019021295860323495, 6.3486686503395129,
+                  true, 46}));
 
 // The first face of a fuzzed flat sheet (tests/brep/data), tessellated: its status and per-level
 // quality, each level within its tolerance; whether the face is flat() for that tolerance.
