@@ -201,21 +201,29 @@ FlatSheetRun tessellateSheet(const char* file, double deflection, double angleDe
   return run;
 }
 
+// A flat face meshed OK on `levelCount` levels; from level `first` on, 1 to `mostTriangles`
+// triangles a level, none flipped.
+void expectMeshedInItsPlane(const FlatSheetRun& run, std::size_t levelCount, std::size_t mostTriangles,
+                            std::size_t first = 0) {
+  EXPECT_TRUE(run.flat);
+  EXPECT_EQ(run.status, FaceStatus::kOk);
+  ASSERT_EQ(run.levels.size(), levelCount);
+  for (std::size_t k = first; k < run.levels.size(); ++k) {
+    EXPECT_GE(run.levels[k].triangles, 1u) << "level " << k;
+    EXPECT_LE(run.levels[k].triangles, mostTriangles) << "level " << k;
+    EXPECT_EQ(run.levels[k].flipped, 0u) << "level " << k;
+  }
+}
+
 // flat_bilinear_sheet_with_a_pole_edge.brep (seed 2323, input 219): a bilinear sheet whose side
 // u = umin is a pole, the rest a triangle in its plane. The degenerate edge's two ends, one point
 // in the plane but for rounding, made boundary segments crossing at the pole and the face fell
 // back to BRepMesh; the edge is now that one point: one triangle a level (11 to 21 in the scaled
 // UV plane).
 TEST(FlatFreeForm, APoleEdgeIsOnePointOfItsOutline) {
-  const FlatSheetRun run = tessellateSheet("flat_bilinear_sheet_with_a_pole_edge.brep",
-                                           0.00031872078866525794, 19.574349584191651);
-  EXPECT_TRUE(run.flat);
-  EXPECT_EQ(run.status, FaceStatus::kOk);
-  ASSERT_EQ(run.levels.size(), 6u);
-  for (const FaceQuality& q : run.levels) {
-    EXPECT_EQ(q.triangles, 1u);
-    EXPECT_EQ(q.flipped, 0u);
-  }
+  expectMeshedInItsPlane(tessellateSheet("flat_bilinear_sheet_with_a_pole_edge.brep", 0.00031872078866525794,
+                                         19.574349584191651),
+                         6, 1);
 }
 
 // flat_sheet_across_from_its_planes_origin.brep (seed 606, input 36): a flat sheet fanning from a
@@ -223,15 +231,9 @@ TEST(FlatFreeForm, APoleEdgeIsOnePointOfItsOutline) {
 // below what the triangulator takes (the face fell back to BRepMesh); rounding noise is now zero:
 // 5 and 7 triangles (11 and 15 in the scaled UV plane).
 TEST(FlatFreeForm, RoundingNoiseAtThePlanesOriginIsZero) {
-  const FlatSheetRun run = tessellateSheet("flat_sheet_across_from_its_planes_origin.brep",
-                                           0.0060887389133381287, 43.187380788891431);
-  EXPECT_TRUE(run.flat);
-  EXPECT_EQ(run.status, FaceStatus::kOk);
-  ASSERT_EQ(run.levels.size(), 2u);
-  for (const FaceQuality& q : run.levels) {
-    EXPECT_LE(q.triangles, 8u);
-    EXPECT_EQ(q.flipped, 0u);
-  }
+  expectMeshedInItsPlane(tessellateSheet("flat_sheet_across_from_its_planes_origin.brep",
+                                         0.0060887389133381287, 43.187380788891431),
+                         2, 8);
 }
 
 // flat_sheet_whose_chords_cross_in_its_plane.brep (seed 909, input 292): a flat rational sheet
@@ -254,15 +256,9 @@ TEST(FlatFreeForm, AFlatFaceWhoseBoundaryCrossesInItsPlaneIsMeshedInTheScaledPla
 // the work bound on level 2 (106476 triangles, 15668 flipped); back in the plane from level 1 on,
 // 22 to 58 triangles, none flipped.
 TEST(FlatFreeForm, AFlatFaceReturnsToItsPlaneWhereItsBoundaryNoLongerCrosses) {
-  const FlatSheetRun run = tessellateSheet("flat_sheet_whose_coarsest_chords_cross_in_its_plane.brep",
-                                           0.00019265448580190577, 31.447165636682691);
-  EXPECT_TRUE(run.flat);
-  EXPECT_EQ(run.status, FaceStatus::kOk);
-  ASSERT_EQ(run.levels.size(), 7u);
-  for (std::size_t k = 1; k < run.levels.size(); ++k) {
-    EXPECT_LE(run.levels[k].triangles, 100u) << "level " << k;
-    EXPECT_EQ(run.levels[k].flipped, 0u) << "level " << k;
-  }
+  expectMeshedInItsPlane(tessellateSheet("flat_sheet_whose_coarsest_chords_cross_in_its_plane.brep",
+                                         0.00019265448580190577, 31.447165636682691),
+                         7, 100, 1);
 }
 
 }  // namespace
