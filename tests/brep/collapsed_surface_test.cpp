@@ -20,9 +20,9 @@ namespace cetview::brep {
 namespace {
 
 // The flat sheets fanning from a pole below are meshed in their plane since the forty-third
-// session (SurfaceEval::flat(); FlatFreeForm.FlatSheetsFanningFromAPoleAreMeshedInTheirPlane): the
-// tests of how the scaled UV plane handles them run with flat faces off while this lives, so that
-// handling, which faces bent out of their plane still need, stays tested.
+// session (SurfaceEval::flat(); FlatSheetFanningFromAPole.IsMeshedInItsPlane): the tests of how
+// the scaled UV plane handles them run with flat faces off while this lives, so that handling,
+// which faces bent out of their plane still need, stays tested.
 struct ScaledPlaneOnly {
   ScaledPlaneOnly() { SurfaceEval::enableFlatFaces(false); }
   ~ScaledPlaneOnly() { SurfaceEval::enableFlatFaces(true); }

@@ -46,12 +46,6 @@ INSTANTIATE_TEST_SUITE_P(FuzzedFaces, UnevenRationalPatch,
                                          UnevenPatch{"uneven_rational_b.brep", 0.00022715833633490608, 40.050278477149611},
                                          UnevenPatch{"uneven_pole_walk.brep", 0.00054744222549954612, 54.084153505760284}));
 
-// seam_beside_tiny_spans.brep is a surface periodic in u whose last u spans, just before the seam,
-// are a millionth wide: the surface turns sharply across the seam. A sample on a triangle's chord
-// along the seam has its foot on the seam, a few millionths of v away from its interpolated start,
-// but every Gauss-Newton and damped step also stepped across the seam into those spans, far from
-// the sample, and the distance stayed where it started. The measure also takes damped steps held
-// inside the face's parameter box, which slide along the seam instead.
 // The measure's reading of the triangle with these corner parameters (corners on the surface),
 // its finer seeds taken past `fineAbove`.
 double measuredTriangle(const SurfaceEval& eval, const double uv[6], double fineAbove = INFINITY) {
@@ -138,6 +132,12 @@ TEST(CollapsedPastAKnot, ASeamAlongTheCollapseMeasuresWithinItsTolerance) {
                            test::relative(0.00010150801690357978, 47.501945525291831));
 }
 
+// seam_beside_tiny_spans.brep is a surface periodic in u whose last u spans, just before the seam,
+// are a millionth wide: the surface turns sharply across the seam. A sample on a triangle's chord
+// along the seam has its foot on the seam, a few millionths of v away from its interpolated start,
+// but every Gauss-Newton and damped step also stepped across the seam into those spans, far from
+// the sample, and the distance stayed where it started. The measure also takes damped steps held
+// inside the face's parameter box, which slide along the seam instead.
 TEST(SeamBesideTinySpans, AChordAlongTheSeamMeasuresItsDistanceToTheSeam) {
   // A triangle of the mesh at 0.0988% (level 3, tolerance 0.055): its first two corners on the
   // seam (u = 0), the third inside. Scanned along the seam in steps of 1.25e-9 of v, the surface
