@@ -1,8 +1,10 @@
 // Flat free-form faces (SurfaceEval::flat()): a B-spline whose poles lie in one plane, within a
-// hundredth of the tolerance, and whose parametrisation keeps its orientation over the face but is
-// uneven there (speeds 4x apart), is meshed in that plane: its scaled plane is the plane itself, so
-// the triangulation is one of the face's outline in 3D, whatever its weights do to the
-// parametrisation.
+// hundredth of the tolerance, whose face lies within one period where it is periodic, and whose
+// parametrisation keeps its orientation over the face (a pole row on its side excepted) but is
+// uneven there (speeds 4x apart, or down to nothing on a pole row), is meshed in that plane: its
+// scaled plane is the plane itself, so the triangulation is one of the face's outline in 3D,
+// whatever its weights do to the parametrisation. Where its domain fails in that plane, the level
+// is built in the scaled UV plane.
 #include <gtest/gtest.h>
 
 #include <cmath>

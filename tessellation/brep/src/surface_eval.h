@@ -126,9 +126,9 @@ class SurfaceEval {
   // parametrisation squeezed unevenly by its weights (speeds 1e4 apart across a flat fuzzed sheet):
   // triangles well shaped in the scaled plane overlapped in 3D, and refining them made more (a
   // sheet flat within 2e-9 of its size: 375788 triangles on its first level, 53756 of them
-  // flipped). The edge table keeps uAxis() and vAxis(): where a boundary's pcurves cross, the
-  // crossings it separates in that plane may be left crossing in this one (the face then falls
-  // back, or shows no triangles, and says why).
+  // flipped). The edge table keeps uAxis() and vAxis(): chords it separates in that plane may
+  // cross in this one, and the mesher then builds that level in the scaled UV plane instead
+  // (FaceMesher::buildDomainFlatOrScaled, useFlat()).
   bool flat() const { return flat_; }
   double flatThickness() const { return flatThickness_; }  // the poles' largest distance from the plane
   // Makes the face flat() if it is, for that chordal tolerance (the constructor calls it with its
