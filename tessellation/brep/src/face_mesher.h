@@ -163,6 +163,11 @@ class FaceMesher {
     // Two of them half a period or more apart in a periodic direction, with no boundary chord
     // between them: the triangle spans the seam, and the band it stands for is not covered.
     bool wraps = false;
+    // Every pair of corners on one 3D point is a pair of pole vertices (singular_): the triangle
+    // stands on a pole's row, and the sector behind it is the pole's fan (sample()).
+    bool onPoleRow = true;
+    // Such a triangle's regular corner's normal (evaluateTriangle sets it; sample() reads it).
+    const gp_Dir* fanNormal = nullptr;
   };
   struct Pending {            // what evaluateTriangle leaves for finishTriangle
     double worst = -1, corresponding = -1;  // the interior samples' largest distances
