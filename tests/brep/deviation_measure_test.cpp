@@ -12,7 +12,11 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
+#include <GeomConvert.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
 #include <TopoDS_Face.hxx>
 
 #include "brep/measure.h"
@@ -180,6 +184,42 @@ TEST(ZeroAreaAlongASide, ATriangleOnTheSideMeasuresItsDistanceToTheSide) {
                         0.19238185096072263, 0.99999999999999978, 0.36222043867013715};
   EXPECT_LT(measuredTriangle("zero_area_along_a_side.brep", uv), 0.2 * 706.269)
       << "2160 from 17 points along the side";
+}
+
+// A reading asked only whether triangles are within a bound (FaceMesher::measuredWithin, on the
+// triangles whose splits would break a chord's clearance) stops once a sample is confirmed over
+// it: over the bound exactly where the full reading is. Two triangles of a B-spline sphere, lifted
+// 0.01 and 0.1 off it along its normal: a bound under the first one's distance stops within the
+// first (each of a sample's readings confirms it over, the finest from 2145 surface points).
+TEST(StoppedReading, IsOverItsBoundExactlyWhereTheFullReadingIs) {
+  const Handle(Geom_Surface) sphere = GeomConvert::SurfaceToBSplineSurface(
+      new Geom_RectangularTrimmedSurface(new Geom_SphericalSurface(gp_Ax3(), 10), 0, 1, -0.5, 0.5));
+  const SurfaceEval eval(test::uvPolygonFace(sphere, {{0, -0.5}, {1, -0.5}, {1, 0.5}, {0, 0.5}}));
+  const double uv[12] = {0.1, 0.1, 0.2, 0.1, 0.1, 0.2, 0.5, 0.0, 0.6, 0.0, 0.5, 0.1};
+  const double lift[2] = {0.01, 0.1};
+  std::vector<double> positions(18);
+  for (int i = 0; i < 6; ++i) {
+    gp_Pnt p;
+    gp_Dir n;
+    ASSERT_TRUE(eval.pointNormal(uv[2 * i], uv[2 * i + 1], p, n));
+    const gp_Pnt q = p.Translated(gp_Vec(n) * lift[i / 3]);
+    positions[3 * i] = q.X(), positions[3 * i + 1] = q.Y(), positions[3 * i + 2] = q.Z();
+  }
+  const std::uint32_t idx[6] = {0, 1, 2, 3, 4, 5};
+  const double first = measureDeviation(eval, positions.data(), uv, idx, 1);
+  const double full = measureDeviation(eval, positions.data(), uv, idx, 2);
+  ASSERT_GT(first, 0.009);
+  ASSERT_GT(full, 0.09);
+  for (const double bound : {0.5 * first, 0.99 * first, 2 * first, 0.99 * full, full, 2 * full}) {
+    const double stopped = measureDeviation(eval, positions.data(), uv, idx, 2, bound, bound);
+    const double reading = measureDeviation(eval, positions.data(), uv, idx, 2, bound);
+    EXPECT_EQ(stopped > bound, reading > bound) << "bound " << bound;
+    if (reading <= bound) {
+      EXPECT_EQ(stopped, reading) << "bound " << bound;
+    }
+  }
+  // Stopped within the first triangle, short of the second one's distance.
+  EXPECT_LE(measureDeviation(eval, positions.data(), uv, idx, 2, INFINITY, 0.5 * first), first);
 }
 
 }  // namespace

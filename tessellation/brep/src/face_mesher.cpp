@@ -1544,8 +1544,8 @@ bool FaceMesher::measuredWithin(cet::TriangleId t, const FaceMesh& mesh, double 
   // over its tolerance by the other.
   if (!judge_) judge_ = std::make_unique<SurfaceEval>(eval_.adaptor().Face());
   static const std::uint32_t kForward[3] = {0, 1, 2}, kReversed[3] = {0, 2, 1};
-  return measureDeviation(*judge_, positions, uv, settings_.reversed ? kReversed : kForward, 1, bound) <=
-         bound;
+  return measureDeviation(*judge_, positions, uv, settings_.reversed ? kReversed : kForward, 1, bound,
+                          bound) <= bound;
 }
 
 bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {

@@ -95,7 +95,7 @@ double longestSide(const double* positions, const std::uint32_t v[3]) {
 }  // namespace
 
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv,
-                        const std::uint32_t* idx, std::size_t triangles, double fineAbove) {
+                        const std::uint32_t* idx, std::size_t triangles, double fineAbove, double stopAbove) {
   // The centroid and the barycentric grid of step 1/4 without the corners.
   static const double kSamples[13][3] = {
       {1.0 / 3, 1.0 / 3, 1.0 / 3}, {.75, .25, 0}, {.5, .5, 0}, {.25, .75, 0}, {0, .75, .25}, {0, .5, .5}, {0, .25, .75},
@@ -123,6 +123,7 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
       int where = -1;
       const double d = eval.triangleDeviation(corner(0), corner(1), corner(2), where);
       worst = std::max(worst, d);
+      if (worst > stopAbove) return worst;
       if (d >= 0) continue;  // a triangle with no area falls through to the samples
     }
     for (const auto& b : kSamples) {
@@ -241,6 +242,7 @@ double measureDeviation(const SurfaceEval& eval, const double* positions, const 
         d = std::min(d, ds);
       }
       worst = std::max(worst, d);
+      if (worst > stopAbove) return worst;
     }
   }
   return worst;

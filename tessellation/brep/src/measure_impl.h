@@ -22,8 +22,12 @@ namespace cetview::brep {
 // surface collapses onto a point, projections cannot move).
 // positions xyz and uv per vertex; idx three per triangle.
 // A sample still over `fineAbove` (the tolerance it is judged by) is also taken from a finer grid.
+// Once the largest distance so far is over `stopAbove`, it is returned at once: a reading over
+// stopAbove for exactly the triangles whose full reading is (the samples are read in the same
+// order either way), for callers that only ask whether the triangles are within it.
 double measureDeviation(const SurfaceEval& eval, const double* positions, const double* uv,
-                        const std::uint32_t* idx, std::size_t triangles, double fineAbove = INFINITY);
+                        const std::uint32_t* idx, std::size_t triangles, double fineAbove = INFINITY,
+                        double stopAbove = INFINITY);
 
 // Largest angle (radians) between the exact surface normals at the two ends of a triangle edge:
 // DESIGN.md's angular deflection. Edges shorter than `minLength` (the size below which neither
