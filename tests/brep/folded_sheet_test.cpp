@@ -303,5 +303,23 @@ TEST(FoldedSheet, AnEdgeOnTheFoldLineTakesTheNormalsOfItsFace) {
   }
 }
 
+// tests/brep/data/flat_periodic_sheet_folded_flat_from_a_pole.brep (face_fuzz seed 2222, input 235): a
+// flat biquadratic sheet, periodic in u with three poles a row, from a pole to a far row that the
+// fuzzer flagged degenerated, folded flat where its rows turn back (the normals either side exactly
+// opposed, so no fold point is found: SurfaceEval::findFold). The refinement's own reading of a
+// triangle across a fold starts its projections on the wrong side and reads it over the tolerance
+// where the measure (the promise's judge) finds it well within: its splits along the fold, each a
+// hair off it, made slivers across it that read over again. With the sector triangles on its pole
+// row no longer split for the gap along the sheet (pole_fan_test.cpp), its level 4 ran so from 85 to
+// 1645 triangles, its last from 253 to 79141 (5811 flipped); a triangle across a fold is split for
+// its deviation only where the measure also reads it over: 75 on the last level (8 flipped).
+TEST(FoldedSheet, ATriangleAcrossAFoldIsSplitForItsDeviationOnlyWhereTheMeasureReadsItOver) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("flat_periodic_sheet_folded_flat_from_a_pole.brep",
+                               test::relative(0.00023894704873424804, 9.2642099641412976));
+  ASSERT_FALSE(levels.empty());
+  EXPECT_LT(levels.back().triangles, 400u);
+}
+
 }  // namespace
 }  // namespace cetview::brep
