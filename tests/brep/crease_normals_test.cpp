@@ -208,5 +208,29 @@ TEST(CreaseNormals, NoTriangleBridgesABend) {
                    check);  // bent by 90 and 58 degrees
 }
 
+// tests/brep/data/triangular_tube_creased_where_its_speed_jumps.brep, written by face_fuzz: a
+// rational B-spline tube, degree 1 around (three rows of poles, so a crease at each knot, turning
+// about 60 degrees) and a conic along, its weights from 0.002 to 298: across the knot at u =
+// 0.5146 the surface runs 50 to 100 times faster on one side than on the other. The refinement's
+// deviation splits of triangles across that crease fell at their worst samples, a hair beside the
+// line, and each left slivers across it that read over again: 36541 triangles on level 0 (3230
+// flipped), 135233 on the last (249 flipped, 15 of them across folds), with 45385 points on the
+// line and 29k within 1e-5 of it. A deviation split of a triangle across a bend goes onto the bend's
+// line, as one across a sharp knot does (FaceMesher::ontoCreaseLine): 5219 and 8689 triangles, 17
+// flipped on the last level, 16 of them across folds.
+TEST(CreaseNormals, DeviationSplitsAcrossABendGoOntoItsLine) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("triangular_tube_creased_where_its_speed_jumps.brep",
+                               test::relative(0.00041551383498714553, 24.253986419470511));
+  ASSERT_FALSE(levels.empty());
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    EXPECT_EQ(levels[k].degenerate, 0u) << "level " << k;
+    EXPECT_LE(levels[k].flipped - levels[k].flippedAcrossFolds, 10u)
+        << "level " << k << " (3221 on level 0, 234 on the last with the splits beside the line)";
+  }
+  EXPECT_LE(levels.front().triangles, 10000u) << "36541 with the splits beside the line";
+  EXPECT_LE(levels.back().triangles, 15000u) << "135233 with the splits beside the line";
+}
+
 }  // namespace
 }  // namespace cetview::brep

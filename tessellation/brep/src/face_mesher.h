@@ -308,8 +308,9 @@ class FaceMesher {
   // cascaded (a fuzzed sheet folded at two knots, seed 101 input 223: 165k -> 443k triangles).
   bool creasePoint(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const;
   // Moves a split point (u, v) of triangle t onto a sharp knot's line (SurfaceEval::findSharpKnots)
-  // that the triangle spans, where that line crosses t (see refine()).
-  void ontoSharpKnot(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const;
+  // or a bend's (SurfaceEval::bendBetween) that the triangle spans, where that line crosses t (see
+  // refine()).
+  void ontoCreaseLine(cet::TriangleId t, const FaceMesh& mesh, double& u, double& v) const;
   // Keeps a split point of triangle t off the boundary chords near it: the surface under a chord's UV
   // segment bulges away from the 3D chord within the tangent plane, and a point inside that bulge
   // lands on the wrong side of the chord in 3D: a flipped triangle nothing can repair. Moves (u, v)

@@ -326,7 +326,7 @@ class SurfaceEval {
   // 2e-9 wide against 0.002 for the one before: the normal turns 35 degrees within 1e-12 in v, 1e-5
   // in 3D); angle splits crept towards such a knot and left slivers along it, flipped (6.8k on one
   // face). Knots that are creases already (not C1) are left out. Appended to `out`; the mesher also
-  // puts its deviation splits beside such a knot onto its line (FaceMesher::ontoSharpKnot).
+  // puts its deviation splits beside such a knot onto its line (FaceMesher::ontoCreaseLine).
   static constexpr double kSharpKnotSpeedRatio = 100;
   // Of a direction's C1 breaks (`breaks`, increasing), keeps those where the normal turns across
   // the line by more than kCreaseTurnRad somewhere over the face's box (its limits from either
