@@ -31,5 +31,21 @@ TEST(FlippedSplit, ANeedleIsNotSplitOnItsShortEdge) {
   EXPECT_LT(levels.back().flipped, 100u);
 }
 
+// flat_periodic_sheets_folding_into_a_pole_row.brep (face_fuzz seed 404, input 51): two faces on
+// one bicubic sheet that lies in a plane, periodic in u, its v = vmin row collapsed onto one point
+// and its parametrisation folding over within the plane. At 0.0114% and 20.9 degrees face 0 has 52
+// triangles on level 6; on level 7, whose minimum size let them through, splits of flipped
+// triangles crept towards the pole row, each leaving flipped ones beside it: 81396 triangles
+// (11208 flipped, 240 across folds) after 40678 such splits. A face splits at most
+// kMaxFlippedSplits flipped triangles a level: 506 triangles, 85 flipped.
+TEST(FlippedSplit, SplitsOfFlippedTrianglesAreBoundedPerLevel) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("flat_periodic_sheets_folding_into_a_pole_row.brep",
+                               test::relative(0.00011448062065530057, 20.948195620660719));
+  ASSERT_EQ(levels.size(), 8u);
+  EXPECT_LE(levels.back().triangles, 2000u) << "81396 with only the splits below the minimum size bounded";
+  EXPECT_LE(levels.back().flipped, 200u) << "11208 with only the splits below the minimum size bounded";
+}
+
 }  // namespace
 }  // namespace cetview::brep

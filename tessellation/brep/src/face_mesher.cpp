@@ -40,11 +40,15 @@ namespace {
 // reported ok (seed 404 input 240: 625k triangles, 112 of them over); a level that ends here is
 // reported as the point bound's are.
 constexpr int kMaxPasses = 4096;
-// Splits of flipped triangles below the level's minimum size (splitsBelowMinSize) per face and level.
-// A few end an orientation error (Propeller's blade tips took 4); where a fold of the surface's
+// Splits of flipped triangles per face and level, of any size. A few end an orientation error
+// (Propeller's blade tips took 4; over the sample models at 1%, 0.1% and 0.01% no face splits more
+// than 511 on a level, terrain's level 0 at 0.1% the most); where a fold of the surface's
 // parametrisation meets a pole, every split made another flipped sliver beside it, down to a
-// thousandth of the tolerance (a fuzzed folded sheet: 2.1 million triangles in 13 s).
-constexpr int kMaxSplitsBelowMinSize = 1024;
+// thousandth of the tolerance below the minimum size (a fuzzed folded sheet: 2.1 million
+// triangles in 13 s), and above it on flat and folded sheets (fuzzed faces: a plane's last level,
+// 52 triangles before it, took 81396, 11208 flipped, its splits creeping towards a pole row; with
+// the bound 506 and 85).
+constexpr int kMaxFlippedSplits = 1024;
 // Fold points (FaceMesher::foldPoint): edges across a fold are split on it down to this fraction of
 // the level's tolerance.
 constexpr double kFoldFloor = 1e-3;
@@ -1563,7 +1567,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
   if (refineLevel_ != levelIndex)
     quadFlips_.clear(), pivotFlips_.clear(), vertexPivotFlips_.clear(), failedSplits_.clear(),
         noFold_.clear();
-  int belowMinSize = 0;  // splits of flipped triangles under the minimum size, this level
+  int flippedSplits = 0;  // splits of flipped triangles, this level (kMaxFlippedSplits)
   int foldTroubleThisCall = 0;
   // Counted from the level's first call: a cancelled level resumes to the mesh an uninterrupted run makes.
   if (refineLevel_ != levelIndex) refineLevel_ = levelIndex, refineStart_ = cdt_->vertexCount();
@@ -1726,17 +1730,16 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         at = 0;
         forCrease = true;
       } else if (((r->flags & TriangleRecord::kFlipped) || r->facetCos < kFoldCos) && !allSingular(t) &&
-                 !inLineOnChordIntoPole(t, *r) &&
-                 (r->longest > minSize ||
-                  (splitsBelowMinSize(*r) && !(atFold && foldsFailed_) && r->longest > 1e-3 * level.chordal &&
-                   belowMinSize < kMaxSplitsBelowMinSize))) {
+                 !inLineOnChordIntoPole(t, *r) && flippedSplits < kMaxFlippedSplits &&
+                 (r->longest > minSize || (splitsBelowMinSize(*r) && !(atFold && foldsFailed_) &&
+                                           r->longest > 1e-3 * level.chordal))) {
         // Flipped, or folded (the facet turns further from the surface than its corners' spread
         // allows): such triangles are slivers; bisect the longest free edge (a centroid would make
         // thinner ones), unless flipping an edge puts them right (repairingFlip).
         at = r->longestFreeEdge < 3 ? 1 + r->longestFreeEdge : 0;
         if (r->longest > level.chordal) flipEdge = repairingFlip(t, mesh);
         if (flipEdge < 0 && (huggingPoleChord(t, *r, mesh) || alongChord(t))) continue;
-        if (flipEdge < 0) belowMinSize += r->longest <= minSize;
+        if (flipEdge < 0) ++flippedSplits;
       }
       if (at < 0) continue;
       if (flipEdge < 0 && !failedSplits_.empty() &&
