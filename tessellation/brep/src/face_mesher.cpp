@@ -1455,8 +1455,9 @@ void FaceMesher::ontoCreaseLine(cet::TriangleId t, const FaceMesh& mesh, double&
     if (!eval_.sharpKnotBetween(uDir, first, last, uDir ? u : v, knot) &&
         !eval_.bendBetween(uDir, first, last, knot))
       continue;
-    // The knot's line in scaled (u, v) (straight there, as t's edges are) crosses two of t's edges:
-    // take the point of that chord nearest the split point's other coordinate, a little inside.
+    // The line (`knot`: a sharp knot's or a bend's) in scaled (u, v) (straight there, as t's edges
+    // are) crosses two of t's edges: take the point of that chord nearest the split point's other
+    // coordinate, a little inside.
     const cet::Point2 at = scaled(uDir ? knot : u, uDir ? v : knot);
     const double x = uDir ? at.x : at.y;
     double lo = 1e300, hi = -1e300;
