@@ -1606,10 +1606,16 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       for (cet::TriangleId t = 0; t < triangles; ++t)
         if (!m.isGhost(t) && !m.isOutside(t)) visit_.push_back(t);
     } else {
-      std::sort(work_.begin(), work_.end());
-      work_.erase(std::unique(work_.begin(), work_.end()), work_.end());
-      for (const cet::TriangleId t : work_)
-        if (!m.isGhost(t) && !m.isOutside(t)) visit_.push_back(t);
+      // Each once, in id order: marked in a bitmap and read back word by word (a new point's ~6
+      // triangles are mostly its neighbours' too; sorting the list took 2% of A319's time).
+      workBits_.assign((triangles + 63) / 64, 0);
+      for (const cet::TriangleId t : work_) workBits_[t >> 6] |= std::uint64_t{1} << (t & 63);
+      for (std::size_t w = 0; w < workBits_.size(); ++w) {
+        for (std::uint64_t bits = workBits_[w]; bits != 0; bits &= bits - 1) {
+          const auto t = static_cast<cet::TriangleId>(64 * w + static_cast<std::size_t>(__builtin_ctzll(bits)));
+          if (!m.isGhost(t) && !m.isOutside(t)) visit_.push_back(t);
+        }
+      }
     }
     // Triangles without a current record are measured, in parallel where the run has idle workers.
     measured_.clear();

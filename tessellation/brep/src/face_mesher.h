@@ -493,6 +493,7 @@ class FaceMesher {
   std::vector<cet::TriangleId> splitTriangles_;  // the triangle each point of points_ splits
   std::vector<std::pair<cet::TriangleId, int>> flips_;  // a pass's repairing flips (repairingFlip)
   std::vector<cet::TriangleId> work_, nextWork_;   // triangles a refinement pass looks at (after the first)
+  std::vector<std::uint64_t> workBits_;            // work_ as a set, one bit per triangle
   std::vector<cet::InsertOutcome> outcomes_;
   std::vector<int> touched_;  // the refinement pass (stamp) that last split a triangle at this vertex
   std::vector<cet::TriangleId> visit_;     // a pass's triangles, in id order
