@@ -1,5 +1,7 @@
 #include "bspline_direct.h"
 
+#include "bspline_basis.h"
+
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -56,95 +58,6 @@ std::unique_ptr<BSplineDirect> BSplineDirect::create(const Handle(Geom_BSplineSu
   d->buildPatches();
   return d;
 }
-
-namespace {
-
-// The reciprocals of the knot differences the degree-d basis functions of span s divide by (see
-// basis() below): round j, term r: 1 / (U[s+r+1] - U[s+r+1-j]), 0 for coincident knots.
-void knotReciprocals(const double* U, int d, int s, double* inv) {
-  for (int j = 1; j <= d; ++j) {
-    for (int r = 0; r < j; ++r) {
-      const double den = U[s + r + 1] - U[s + r + 1 - j];
-      inv[j * (j - 1) / 2 + r] = den > 0 ? 1.0 / den : 0.0;
-    }
-  }
-}
-
-}  // namespace
-
-void BSplineDirect::Direction::index() {
-  const int first = degree, last = poles - 1;  // spans
-  const int perSpan = degree * (degree + 1) / 2;
-  inverse.assign(static_cast<std::size_t>((last - first + 1) * perSpan), 0.0);
-  for (int s = first; s <= last; ++s) {
-    knotReciprocals(knots.data(), degree, s, inverse.data() + (s - first) * perSpan);
-  }
-  const double a = knots[static_cast<std::size_t>(first)], b = knots[static_cast<std::size_t>(last + 1)];
-  const int buckets = 2 * (last - first + 1);
-  t0 = a;
-  perBucket = b > a ? buckets / (b - a) : 0.0;
-  bucketSpan.assign(static_cast<std::size_t>(buckets), first);
-  int s = first;
-  for (int i = 0; i < buckets; ++i) {
-    const double start = a + i / perBucket;
-    while (s < last && knots[static_cast<std::size_t>(s + 1)] <= start) ++s;
-    bucketSpan[static_cast<std::size_t>(i)] = s;
-  }
-}
-
-int BSplineDirect::Direction::span(double t) const {
-  // The largest span s with knots[s] <= t, kept within degree .. poles - 1.
-  const int last = poles - 1;
-  if (!(t > t0)) return degree;
-  const double x = (t - t0) * perBucket;
-  int s = x < static_cast<double>(bucketSpan.size()) ? bucketSpan[static_cast<std::size_t>(x)] : last;
-  // A bucket's start may round to either side of a knot: step back, then forward.
-  while (s > degree && knots[static_cast<std::size_t>(s)] > t) --s;
-  while (s < last && knots[static_cast<std::size_t>(s + 1)] <= t) ++s;
-  return s;
-}
-
-int BSplineDirect::Direction::spanBelow(double t) const {
-  int s = span(t);
-  while (s > degree && !(knots[static_cast<std::size_t>(s)] < t)) --s;  // past empty spans of repeated knots
-  return s;
-}
-
-namespace {
-
-// Cox-de Boor, one degree at a time (The NURBS Book's triangular scheme), for the basis functions
-// N[0..p] of a span at t (N[r] is N_{s-p+r, p}) and, when dN is not null, their first derivatives.
-// The scheme divides by differences of knots only (round j, term r: U[s+r+1] - U[s+r+1-j]), so
-// `inverse` holds their reciprocals for the span, j = 1..p, r = 0..j-1 (0 for coincident knots).
-// Before the last round N holds the degree p - 1 functions, from which the derivatives follow:
-//   N'_{i,p} = p (N_{i,p-1} / (U[i+p] - U[i]) - N_{i+1,p-1} / (U[i+p+1] - U[i+1])),
-// whose knot differences are those of the last round.
-// P > 0 fixes the degree at compile time (unrolled loops); P == 0 takes it from `degree`.
-template <int P>
-void basis(const double* U, const double* inverse, int degree, int s, double t, double* N, double* dN) {
-  const int p = P > 0 ? P : degree;
-  double left[BSplineDirect::kMaxDegree + 1], right[BSplineDirect::kMaxDegree + 1];
-  N[0] = 1.0;
-  for (int j = 1; j <= p; ++j) {
-    left[j] = t - U[s + 1 - j];
-    right[j] = U[s + j] - t;
-    const double* inv = inverse + j * (j - 1) / 2;
-    if (j == p && dN) {
-      dN[0] = -p * N[0] * inv[0];
-      for (int r = 1; r < p; ++r) dN[r] = p * (N[r - 1] * inv[r - 1] - N[r] * inv[r]);
-      dN[p] = p * N[p - 1] * inv[p - 1];
-    }
-    double saved = 0.0;
-    for (int r = 0; r < j; ++r) {
-      const double temp = N[r] * inv[r];
-      N[r] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
-    }
-    N[j] = saved;
-  }
-}
-
-}  // namespace
 
 void BSplineDirect::Direction::buildPower() {
   // Taylor coefficients at the span's midpoint: the k-th derivative of N_i comes from the k-th

@@ -24,6 +24,8 @@
 #include <memory>
 #include <vector>
 
+#include "bspline_basis.h"
+
 namespace cetview::brep {
 
 class BSplineDirect {
@@ -33,7 +35,7 @@ class BSplineDirect {
   static std::unique_ptr<BSplineDirect> create(const Handle(Geom_BSplineSurface)& surface,
                                                const gp_Trsf& placement = gp_Trsf());
 
-  static constexpr int kMaxDegree = 25;  // OpenCASCADE's own limit
+  static constexpr int kMaxDegree = kMaxBSplineDegree;
 
   // Whether points go through the polynomial patches (see buildPatches), for tests.
   bool usesPatches() const { return !patches_.empty(); }
@@ -60,20 +62,8 @@ class BSplineDirect {
   void d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) const { d1(u, v, uSpan(u), vSpan(v), p, du, dv); }
 
  private:
-  // One direction: its flat knot sequence (each knot repeated by its multiplicity) and a table of
-  // uniform buckets over the parameter range, each naming the span its start lies in, so a span is
-  // found in a step or two instead of a binary search.
-  struct Direction {
-    int degree = 0, poles = 0;
-    std::vector<double> knots;
-    double t0 = 0, perBucket = 0;
-    std::vector<int> bucketSpan;
-    void index();
-    int span(double t) const;
-    int spanBelow(double t) const;
-    // Per span: reciprocals of the knot differences its basis functions divide by (see basis()).
-    std::vector<double> inverse;
-    const double* inverses(int s) const { return inverse.data() + (s - degree) * (degree * (degree + 1) / 2); }
+  // One direction: its knots (bspline_basis.h) and, for the patches, its spans' polynomials.
+  struct Direction : KnotSpans {
     // For the patches: span s's basis functions N_{s-p+j} as polynomials in tau = (t - mid) / length
     // about the span's midpoint, coefficient k of function j at power[(s - p) * (p+1)^2 + j (p+1) + k].
     std::vector<double> power, mid, length;  // mid, length per span (length 0: an empty span)

@@ -17,6 +17,8 @@
 #include "brep/tessellator.h"
 #include "brep/worker_pool.h"
 #include "bspline_direct.h"
+#include "pcurve.h"
+#include "spline_curve.h"
 #include "surface_eval.h"
 #include "uv_axis.h"
 
@@ -82,7 +84,7 @@ class EdgeTable {
   struct FaceUse {
     TopoDS_Face face;  // FORWARD
     FaceId id = 0;
-    Handle(Geom2d_Curve) pcurve;
+    Pcurve pcurve;
     double first = 0, last = 0;  // pcurve range
     int side = 1;                // the face lies left (+1) or right (-1) of the pcurve, or both (0: seam)
     const FaceScale* scale = nullptr;  // faceScales_[id], set by scalesSet()
@@ -100,6 +102,9 @@ class EdgeTable {
     // equal segments per level (arcSegments()), each level's a divisor of the next one's; empty
     // for other curves.
     std::vector<std::uint32_t> arcNeeds, arcSegments;
+    // A non-periodic B-spline 3D curve, placed, evaluated directly (spline_curve.h); else null and
+    // the discretisation asks OpenCASCADE's adaptor.
+    std::shared_ptr<const SplineCurve<3>> spline;
   };
   // Fills levels_[e][level]; false, with the points half made, when `cancel` was raised meanwhile.
   bool discretiseEdge(EdgeId e, int level, const Level& tolerance, const std::atomic<bool>* cancel);
