@@ -1230,6 +1230,16 @@ double SurfaceEval::projectFrom(const gp_Pnt& m, double& u, double& v, int maxIt
                                 double settle, double enough) const {
   gp_Pnt s;
   gp_Vec du, dv;
+  if (direct_ && enough > 0) {
+    // Most samples are already within `enough` at their own (u, v): the point alone decides, and
+    // only the others need the derivatives. (The direct evaluation's point is the same to the last
+    // bit with or without them, in the spans d1() takes: faceSideD1.)
+    const int uSpan = u >= uMax ? direct_->uSpanBelow(u) : direct_->uSpan(u);
+    const int vSpan = v >= vMax ? direct_->vSpanBelow(v) : direct_->vSpan(v);
+    const double d = gp_Vec(direct_->value(u, v, uSpan, vSpan), m).Magnitude();
+    if (start) *start = d;
+    if (d <= enough) return d;
+  }
   double best = 1e300, bu = u, bv = v;
   for (int it = 0; it <= maxIter; ++it) {
     d1(u, v, s, du, dv);
