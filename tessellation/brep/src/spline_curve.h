@@ -39,7 +39,7 @@ class SplineCurve {
   }
 
   // The point at t, and with `d` its first derivative (D values each). A non-rational curve has
-  // weights 1: its points come out as the plain sum of the poles, to the last bit.
+  // weights 1, and the division by them leaves its points as de Boor's steps made them.
   void evaluate(double t, double* p, double* d) const {
     switch (knots_.degree) {  // degrees 1 to 3 (nearly every curve) with their loops unrolled
       case 1:
