@@ -15,7 +15,6 @@
 #include <gp_Vec2d.hxx>
 
 #include <memory>
-#include <vector>
 
 #include "spline_curve.h"
 
@@ -27,7 +26,6 @@ class Pcurve {
   explicit Pcurve(const Handle(Geom2d_Curve)& curve);
 
   bool isNull() const { return curve_.IsNull(); }
-  const Handle(Geom2d_Curve)& curve() const { return curve_; }
   // Whether points come from the poles directly rather than through OpenCASCADE (tests).
   bool direct() const { return spline_ != nullptr; }
 
