@@ -1,7 +1,8 @@
-// The knot side of direct B-spline evaluation, shared by surfaces (bspline_direct.h) and curves
-// (pcurve.h): a direction's flat knot sequence with a bucket index to find a parameter's span in
-// a step or two, the reciprocals of the knot differences each span's basis functions divide by,
-// and the basis functions themselves (with their first derivatives). Immutable once indexed.
+// The knot side of direct B-spline evaluation: a direction's flat knot sequence with a bucket
+// index to find a parameter's span in a step or two (surfaces, bspline_direct.h, and curves,
+// spline_curve.h), and for surfaces the reciprocals of the knot differences each span's basis
+// functions divide by and the basis functions themselves, with their first derivatives (curves
+// use de Boor's algorithm instead). Immutable once indexed.
 #pragma once
 
 #include <vector>
