@@ -75,7 +75,11 @@ void checkRimIsMeshedAlongTheSurface(const Handle(Geom_Surface)& surface, const 
   const FaceReport report = t->report(0);
   EXPECT_EQ(report.status, FaceStatus::kRepaired) << report.reason;
   EXPECT_NE(report.reason.find("flagged degenerated but spanning 10 on the surface"), std::string::npos) << report.reason;
-  EXPECT_LE(finalTriangles(*t), finalTriangles(*reference) * 11 / 10)
+  // Within 1.3x of the clean tube's triangles: on the B-spline tube the clean rims are rational
+  // circles, which take equal segments (circular_arc.h), while the rebuilt rim is an approximation
+  // of its pcurve, halved as any free-form curve, and its points no longer line up with the other
+  // rim's (550 triangles clean, 690 flagged; 604 and 606 while both rims were halved).
+  EXPECT_LE(finalTriangles(*t), finalTriangles(*reference) * 13 / 10)
       << "clean: " << finalTriangles(*reference) << ", flagged: " << finalTriangles(*t);
 }
 

@@ -27,6 +27,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
+#include "circular_arc.h"
 #include "curve_hull.h"
 #include "curve_poles.h"
 #include "facet_rules.h"
@@ -76,11 +77,12 @@ constexpr double kSlenderBulge = kLowestStanding / 4;
 constexpr double kCurlBehind = 1.0 / 64;
 
 // The fewest equal segments of a circular arc (radius r, angle theta) that meet a level's criteria
-// in discretiseEdge(): the sagitta within the chordal tolerance and the tangent turn within the
-// angle, which is not asked of chords shorter than the angle criteria's minimum size.
-std::uint32_t fewestArcSegments(double r, double theta, const Level& tol) {
+// in discretiseEdge(): the sagitta within the chordal tolerance (and within maxSag: see
+// arcSagBeside()) and the tangent turn within the angle, which is not asked of chords shorter than
+// the angle criteria's minimum size.
+std::uint32_t fewestArcSegments(double r, double theta, const Level& tol, double maxSag) {
   constexpr double kBelow = 1 - 1e-9;  // rounding must not leave a segment a hair over
-  const double bySag = 2 * std::acos(std::clamp(1 - tol.chordal / r, -1.0, 1.0)) * kBelow;
+  const double bySag = 2 * std::acos(std::clamp(1 - std::min(tol.chordal, maxSag) / r, -1.0, 1.0)) * kBelow;
   double n = std::ceil(theta / std::max(bySag, 1e-9));
   const double byAngle = tol.angleRad * kBelow;
   // More segments than this have chords shorter than the minimum size (0.1 of the chordal).
@@ -116,25 +118,29 @@ std::vector<std::uint32_t> arcSegments(const std::vector<std::uint32_t>& need) {
 }
 
 // The fewest segments of each level for an arc of radius r and angle theta (a closed edge must be
-// a polygon: at least 3); empty if not a usable arc.
-std::vector<std::uint32_t> arcNeeds(double r, double theta, bool closed, const std::vector<Level>& tolerances) {
+// a polygon: at least 3; maxSag: see arcSagBeside()); empty if not a usable arc.
+std::vector<std::uint32_t> arcNeeds(double r, double theta, bool closed, double maxSag,
+                                    const std::vector<Level>& tolerances) {
   if (!(r > 0) || !(theta > 0)) return {};
   const std::uint32_t least = closed ? 3 : 2;
   std::vector<std::uint32_t> need(tolerances.size());
-  for (std::size_t k = 0; k < tolerances.size(); ++k) need[k] = std::max(least, fewestArcSegments(r, theta, tolerances[k]));
+  for (std::size_t k = 0; k < tolerances.size(); ++k)
+    need[k] = std::max(least, fewestArcSegments(r, theta, tolerances[k], maxSag));
   return need;
 }
 
-// The points of `previous` (increasing, from first to last; may be empty) and those dividing
-// [first, last] into n equal segments, in increasing order; an equal-segment point within a
-// quarter segment of a previous one is left out (the previous ones must stay: nested levels).
-std::vector<double> withEqualSegments(const std::vector<double>& previous, double first, double last, std::uint32_t n) {
+// The points of `previous` (increasing, from first to last; may be empty) and those dividing an
+// arc into n equal segments, in increasing order: point i at parameterAt(i), about `step` apart
+// in parameter; one within a quarter step of a previous one is left out (the previous ones must
+// stay: nested levels).
+template <class ParameterAt>
+std::vector<double> withEqualSegments(const std::vector<double>& previous, std::uint32_t n, double step,
+                                      ParameterAt parameterAt) {
   std::vector<double> out;
   out.reserve(previous.size() + n + 1);
-  const double step = (last - first) / n;
   std::size_t j = 0;
   for (std::uint32_t i = 0; i <= n; ++i) {
-    const double t = i == n ? last : first + step * i;
+    const double t = parameterAt(i);
     while (j < previous.size() && previous[j] < t - 0.25 * step) out.push_back(previous[j++]);
     if (j < previous.size() && previous[j] <= t + 0.25 * step) continue;  // the previous point stands in
     out.push_back(t);
@@ -220,8 +226,17 @@ EdgeTable::EdgeTable(const ModelImpl& model, std::vector<Level> tolerances)
     try {
       BRepAdaptor_Curve curve(edge);
       info.straight = isStraight(curve, info.first, info.last);
-      if (curve.GetType() == GeomAbs_Circle && onArcSurfaces(info.faces))
-        info.arcNeeds = arcNeeds(curve.Circle().Radius(), info.last - info.first, info.closed, tolerances_);
+      if (curve.GetType() == GeomAbs_Circle && !info.faces.empty()) {
+        info.arcAngle = info.last - info.first;
+        info.arcNeeds = arcNeeds(curve.Circle().Radius(), info.arcAngle, info.closed, arcSagBeside(info.faces), tolerances_);
+      } else if ((curve.GetType() == GeomAbs_BSplineCurve || curve.GetType() == GeomAbs_BezierCurve) &&
+                 !info.faces.empty()) {
+        info.splineArc = circularArcOf(curve, info.first, info.last, info.closed);
+        if (info.splineArc) {
+          info.arcAngle = info.splineArc->angle;
+          info.arcNeeds = arcNeeds(info.splineArc->radius, info.arcAngle, info.closed, arcSagBeside(info.faces), tolerances_);
+        }
+      }
       if (v0.IsNull()) info.p0 = curve.Value(info.first);
       if (v1.IsNull()) info.p1 = curve.Value(info.last);
       info.spline = splineOf(curve);
@@ -261,18 +276,21 @@ bool EdgeTable::discretise(int level, WorkerPool& pool, unsigned threads, const 
   return separateCrossings(level, pool, threads, cancel);
 }
 
-// Only planes, cylinders, cones and spheres use the edge (a hole in a plate, a shaft's end, a
-// chamfer's rim, a dome's foot). Beside a torus's tube and on free-form faces the halving's counts
-// stay: other counts left flipped triangles on a torus's coarse levels (Axis_of_bearing). Spheres
-// took more triangles with equal counts while their refinement split at centroids (CylinderHead
-// 1172 -> 1216); since it splits at circumcentres (split_point.h), fewer (CylinderHead 1152 ->
-// 1146, nist_ctc_02 19052 -> 18734 at 0.1%).
-bool EdgeTable::onArcSurfaces(const std::vector<FaceUse>& uses) {
+// How far an arc's chords may sag for the faces beside it, whatever the tolerance: a quarter of the
+// tube's radius beside a torus. A circle along a narrow tube (Axis_of_bearing's quarter tubes, 0.5
+// in radius, on circles of 11 at 1%, where the deflection is 1.42) sagging 0.135 left the tube's
+// first row of points inside the chord's sag (0.118 in), and the triangle between them flipped;
+// halving's 24 segments (0.094) had left room, and so does a quarter of the radius (24 again).
+// Equal segments elsewhere kept every face of the sample models clean; they had been kept to
+// planes, cylinders, cones and spheres since this flip, and beside tori and free-form faces
+// halving's counts took 2% more triangles at 0.01% (Pump_Nut 6350 against 5282).
+double EdgeTable::arcSagBeside(const std::vector<FaceUse>& uses) {
+  double maxSag = HUGE_VAL;
   for (const FaceUse& use : uses) {
-    const GeomAbs_SurfaceType type = BRepAdaptor_Surface(use.face, Standard_False).GetType();
-    if (type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere) return false;
+    const BRepAdaptor_Surface surface(use.face, Standard_False);
+    if (surface.GetType() == GeomAbs_Torus) maxSag = std::min(maxSag, 0.25 * surface.Torus().MinorRadius());
   }
-  return !uses.empty();
+  return maxSag;
 }
 
 // The circles of one cone (a chamfer's two rims) are cut for the largest of their needs on each
@@ -298,11 +316,11 @@ void EdgeTable::shareArcCountsOnCones() {
     if (!info_[e].arcNeeds.empty() && root(e) != e) members[root(e)].push_back(e);
   for (auto& [r, list] : members) {
     list.push_back(r);
-    const double span = info_[r].last - info_[r].first;
+    const double span = info_[r].arcAngle;
     std::vector<std::uint32_t> need = info_[r].arcNeeds;
     bool sameAngle = true;
     for (const EdgeId e : list) {
-      sameAngle = sameAngle && std::abs((info_[e].last - info_[e].first) - span) <= 1e-9 * span;
+      sameAngle = sameAngle && std::abs(info_[e].arcAngle - span) <= 1e-9 * span;
       for (std::size_t k = 0; k < need.size(); ++k) need[k] = std::max(need[k], info_[e].arcNeeds[k]);
     }
     if (!sameAngle) continue;
@@ -438,9 +456,22 @@ bool EdgeTable::discretiseEdge(EdgeId e, int level, const Level& tol, const std:
   if (level > 0) {
     seedT = levels_[e][static_cast<std::size_t>(level - 1)].t;
   }
-  if (!info.arcSegments.empty()) seedT = withEqualSegments(seedT, info.first, info.last, info.arcSegments[static_cast<std::size_t>(level)]);
+  if (!info.arcSegments.empty() && !info.splineArc) {
+    const std::uint32_t n = info.arcSegments[static_cast<std::size_t>(level)];
+    const double step = (info.last - info.first) / n;
+    seedT = withEqualSegments(seedT, n, step, [&](std::uint32_t i) { return i == n ? info.last : info.first + step * i; });
+  }
   try {
     BRepAdaptor_Curve curve(edge);
+    if (!info.arcSegments.empty() && info.splineArc) {
+      // Equal angles, at the parameters where the curve has turned by them.
+      const CircularArc& arc = *info.splineArc;
+      const std::uint32_t n = info.arcSegments[static_cast<std::size_t>(level)];
+      seedT = withEqualSegments(seedT, n, (info.last - info.first) / n, [&](std::uint32_t i) {
+        if (i == 0 || i == n) return i == 0 ? info.first : info.last;
+        return arc.parameterAt(curve, info.first, info.last, arc.angle * i / n);
+      });
+    }
     // The 3D curve's samples and tangents: from its poles where it is a B-spline (Info::spline),
     // else the adaptor's. At the edge's ends the adaptor's too: where an end is a knot of the curve
     // the adaptor takes the derivative of the span inside the edge, the poles' that of the span

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "brep/tessellator.h"
 #include "brep/worker_pool.h"
 #include "bspline_direct.h"
+#include "circular_arc.h"
 #include "pcurve.h"
 #include "spline_curve.h"
 #include "surface_eval.h"
@@ -102,6 +104,9 @@ class EdgeTable {
     // equal segments per level (arcSegments()), each level's a divisor of the next one's; empty
     // for other curves.
     std::vector<std::uint32_t> arcNeeds, arcSegments;
+    double arcAngle = 0;  // how far the arc turns
+    // A B-spline or Bezier curve that is a circular arc (circular_arc.h): its circle.
+    std::optional<CircularArc> splineArc;
     // A non-periodic B-spline 3D curve, placed, evaluated directly (spline_curve.h); else null and
     // the discretisation asks OpenCASCADE's adaptor.
     std::shared_ptr<const SplineCurve<3>> spline;
@@ -109,7 +114,7 @@ class EdgeTable {
   // Fills levels_[e][level]; false, with the points half made, when `cancel` was raised meanwhile.
   bool discretiseEdge(EdgeId e, int level, const Level& tolerance, const std::atomic<bool>* cancel);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
-  static bool onArcSurfaces(const std::vector<FaceUse>& uses);  // planes, cylinders and cones only
+  static double arcSagBeside(const std::vector<FaceUse>& uses);  // the most an arc's chords may sag
   void shareArcCountsOnCones();
 
   // Segment j of edge e (between its points j and j + 1) at the level at hand.
