@@ -10,6 +10,7 @@
 #include <TopoDS.hxx>
 
 #include "brepmesh_fallback.h"
+#include "disguised_surface.h"
 
 #include "model_impl.h"
 #include "tessellator_impl.h"
@@ -125,7 +126,12 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
       scale.uAxis = eval->uAxis(), scale.vAxis = eval->vAxis();
       scale.uMin = eval->uMin, scale.uMax = eval->uMax, scale.vMin = eval->vMin, scale.vMax = eval->vMax;
       const GeomAbs_SurfaceType type = eval->adaptor().GetType();
-      scale.bendsBeside = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone && type != GeomAbs_Sphere;
+      // Tori and free-form faces bend otherwise beside an edge than along it, unless the free-form
+      // surface is a plane, a sphere or a cylinder written as one (disguised_surface.h).
+      scale.bendsBeside = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone &&
+                          type != GeomAbs_Sphere &&
+                          !((type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface) &&
+                            isPlaneSphereOrCylinder(eval->adaptor(), scale.uMin, scale.uMax, scale.vMin, scale.vMax));
       scale.curved = type != GeomAbs_Plane;
       scale.direct = eval->direct();
       scale.creases = eval->creaseLines();
