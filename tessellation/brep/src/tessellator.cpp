@@ -126,14 +126,21 @@ bool TessellatorImpl::prepareSurfaces(unsigned threads, const std::atomic<bool>*
       scale.uAxis = eval->uAxis(), scale.vAxis = eval->vAxis();
       scale.uMin = eval->uMin, scale.uMax = eval->uMax, scale.vMin = eval->vMin, scale.vMax = eval->vMax;
       const GeomAbs_SurfaceType type = eval->adaptor().GetType();
+      scale.direct = eval->direct();
       // Tori and free-form faces bend otherwise beside an edge than along it, unless the free-form
       // surface is a plane, a sphere or a cylinder written as one (disguised_surface.h).
+      const bool freeForm = type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface;
+      const bool disguised =
+          freeForm && (scale.direct ? isPlaneSphereOrCylinder(
+                                          [&scale](double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
+                                            scale.direct->d1(u, v, p, du, dv);
+                                          },
+                                          scale.uMin, scale.uMax, scale.vMin, scale.vMax)
+                                    : isPlaneSphereOrCylinder(eval->adaptor(), scale.uMin, scale.uMax, scale.vMin,
+                                                              scale.vMax));
       scale.bendsBeside = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone &&
-                          type != GeomAbs_Sphere &&
-                          !((type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface) &&
-                            isPlaneSphereOrCylinder(eval->adaptor(), scale.uMin, scale.uMax, scale.vMin, scale.vMax));
+                          type != GeomAbs_Sphere && !disguised;
       scale.curved = type != GeomAbs_Plane;
-      scale.direct = eval->direct();
       scale.creases = eval->creaseLines();
       scale.valid = true;
       faces[f].eval = std::move(eval);
