@@ -12,6 +12,10 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <Geom_Surface.hxx>
 #include <gp_Vec2d.hxx>
 #include <Bnd_Box.hxx>
@@ -164,6 +168,34 @@ std::string addMissingPcurves(const TopoDS_Face& face) {
          " from the 3D curve";
 }
 
+// The surface's own iso curve under a pcurve that runs along one (u or v fixed, the other
+// parameter growing at unit speed: a natural-bounds face's rim), parametrised as the pcurve is;
+// null for other pcurves. Exact where BRepLib::BuildCurve3d approximates: on a cylinder a circle,
+// on a B-spline surface turning round a rational circle, which takes equal segments like the
+// face's other rims (edge_table.cpp); approximated, the rim was halved (a cylinder's tube: 88
+// triangles against the clean tube's 80).
+static Handle(Geom_Curve) isoCurveAlong(const Handle(Geom_Surface)& surface, const Handle(Geom2d_Curve)& pcurve) {
+  Handle(Geom2d_Curve) basis = pcurve;
+  while (const Handle(Geom2d_TrimmedCurve) trimmed = Handle(Geom2d_TrimmedCurve)::DownCast(basis))
+    basis = trimmed->BasisCurve();
+  const Handle(Geom2d_Line) line = Handle(Geom2d_Line)::DownCast(basis);
+  if (line.IsNull()) return nullptr;
+  const gp_Dir2d d = line->Direction();
+  const gp_Pnt2d o = line->Location();
+  const bool alongU = d.X() == 1 && d.Y() == 0, alongV = d.X() == 0 && d.Y() == 1;
+  if (!alongU && !alongV) return nullptr;
+  Handle(Geom_Curve) iso = alongU ? surface->VIso(o.Y()) : surface->UIso(o.X());
+  const double offset = alongU ? o.X() : o.Y();  // the iso curve's parameter at the pcurve's 0
+  if (offset == 0) return iso;
+  const Handle(Geom_BSplineCurve) bspline = Handle(Geom_BSplineCurve)::DownCast(iso);
+  if (bspline.IsNull()) return nullptr;
+  TColStd_Array1OfReal knots(1, bspline->NbKnots());
+  bspline->Knots(knots);
+  for (int i = knots.Lower(); i <= knots.Upper(); ++i) knots(i) -= offset;
+  bspline->SetKnots(knots);
+  return Handle(Geom_Curve)(bspline);
+}
+
 // Edges of `face` flagged degenerated whose pcurve does not stay on one point of the surface (beyond
 // ten times their tolerances and a thousandth of the face: a closed iso row of a periodic surface
 // flagged as a pole, BRepCheck's InvalidDegeneratedFlag) are made regular edges, their 3D curve
@@ -207,7 +239,19 @@ std::string fixFalseDegenerateEdges(const TopoDS_Face& face) {
     BRepBndLib::Add(forward, box, Standard_False);
     if (box.IsVoid() || !(spread > 1e-3 * std::sqrt(box.SquareExtent()))) continue;
     BRep_Builder().Degenerated(edge, Standard_False);
-    if (!BRepLib::BuildCurve3d(edge, BRep_Tool::Tolerance(edge))) {
+    Handle(Geom_Curve) iso;
+    try {
+      iso = isoCurveAlong(surface, pcurve);
+    } catch (const Standard_Failure&) {
+      iso.Nullify();
+    }
+    if (!iso.IsNull()) {
+      BRep_Builder builder;
+      builder.UpdateEdge(edge, iso, BRep_Tool::Tolerance(edge));
+      builder.Range(edge, first, last, Standard_True);
+      builder.SameParameter(edge, Standard_True);
+      builder.SameRange(edge, Standard_True);
+    } else if (!BRepLib::BuildCurve3d(edge, BRep_Tool::Tolerance(edge))) {
       BRep_Builder().Degenerated(edge, Standard_True);  // left as it was: the face reports the bad row
       continue;
     }
