@@ -1,5 +1,6 @@
 #include "disguised_surface.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
