@@ -781,9 +781,9 @@ TEST(HardCases, CirclesWrittenAsBSplinesTakeNearlyTheFewestEqualSegments) {
 // Torus fillets take the torus lattice's points (torus_lattice.h): a quarter tube like bottle's
 // fillets (r 2.5 on a ring of 82.9) and a half tube over the outside, at 0.01. With circumcentre
 // splits alone they took 1.28 and 1.38 times BRepMesh's triangles (its grid of right triangles);
-// with the lattice about as many (its triangles aim at the refinement's margin, 0.85 of the
-// deflection, where BRepMesh's grid reaches 0.99 of it).
-TEST(HardCases, TorusFilletsMeshAsSparselyAsBRepMeshsGrid) {
+// with the lattice, aimed at 0.85 of the deflection, 1.0x; aimed at 0.98 of it (the deviation read
+// at its peak: deviation_peak.h), 0.88x and 0.94x.
+TEST(HardCases, TorusFilletsMeshSparserThanBRepMeshsGrid) {
   const double chordal = 0.01;
   for (const auto& [v0, v1] : {std::pair<double, double>{0, M_PI / 2}, {-M_PI / 2, M_PI / 2}}) {
     SCOPED_TRACE("v from " + std::to_string(v0) + " to " + std::to_string(v1));
@@ -797,7 +797,7 @@ TEST(HardCases, TorusFilletsMeshAsSparselyAsBRepMeshsGrid) {
     TopLoc_Location where;
     const Handle(Poly_Triangulation) grid = BRep_Tool::Triangulation(copy, where);
     ASSERT_FALSE(grid.IsNull());
-    EXPECT_LE(t->triangleCount(t->lastLevel()), grid->NbTriangles() * 21 / 20) << "BRepMesh " << grid->NbTriangles();
+    EXPECT_LE(t->triangleCount(t->lastLevel()), grid->NbTriangles() * 19 / 20) << "BRepMesh " << grid->NbTriangles();
   }
 }
 

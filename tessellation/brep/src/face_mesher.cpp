@@ -28,6 +28,7 @@
 #include <gp_Torus.hxx>
 
 #include "cet/predicates.h"
+#include "deviation_peak.h"
 #include "edge_table.h"
 #include "facet_rules.h"
 #include "measure_impl.h"
@@ -133,6 +134,7 @@ FaceMesher::FaceMesher(FaceTopology topology, const FaceMesherSettings& settings
   // the centroid and edge midpoints catch; doubly curved ones can peak elsewhere in big triangles.
   freeform_ = type != GeomAbs_Plane && type != GeomAbs_Cylinder && type != GeomAbs_Cone;
   exactDeviation_ = eval_.exactTriangleDeviation();
+  peakSampled_ = !exactDeviation_ && eval_.closedFormDistance();
   if (eval_.adaptor().IsUPeriodic()) uPeriod_ = eval_.adaptor().UPeriod();
   if (eval_.adaptor().IsVPeriodic()) vPeriod_ = eval_.adaptor().VPeriod();
   for (const std::string& r : topology_.repairs) repairs_.push_back(r);
@@ -891,27 +893,28 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
     sampleEdge(c, i, edgeWorst[i], edgeCorresponding[i]);
     if (!c.collapsed) r.edgeDeviation[i] = static_cast<float>(edgeWorst[i]), r.edgeCorresponding[i] = static_cast<float>(edgeCorresponding[i]);
   }
-  if (pending.deferred == 0) conclude(r, pending, c.collapsed);
+  if (pending.deferred == 0) conclude(r, pending, c.collapsed, &c);
   // Across a seam: split whatever the tolerance (a level coarser than the whole face, such as a
   // small sphere's level 0, saw every triangle collapsed across its seam and dropped none).
   if (c.wraps) r.deviation = std::numeric_limits<float>::max();
 }
 
 void FaceMesher::finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const {
+  const Corners c = corners(t, mesh);
   for (int i = 0; i < 3; ++i) {
     if (!(pending.deferred >> i & 1u)) continue;
     if (edgeSamplesFromNeighbour(t, i, r.edgeDeviation[i], r.edgeCorresponding[i])) {
       pending.edgeWorst[i] = r.edgeDeviation[i], pending.edgeCorresponding[i] = r.edgeCorresponding[i];
     } else {
-      sampleEdge(corners(t, mesh), i, pending.edgeWorst[i], pending.edgeCorresponding[i]);
+      sampleEdge(c, i, pending.edgeWorst[i], pending.edgeCorresponding[i]);
       r.edgeDeviation[i] = static_cast<float>(pending.edgeWorst[i]);
       r.edgeCorresponding[i] = static_cast<float>(pending.edgeCorresponding[i]);
     }
   }
-  conclude(r, pending, false);
+  conclude(r, pending, false, &c);
 }
 
-void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collapsed) {
+void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collapsed, const Corners* c) const {
   const double* edgeWorst = pending.edgeWorst;
   const double* edgeCorresponding = pending.edgeCorresponding;
   // Ties go to the first sample in the order centroid (and interior), edge 0, 1, 2.
@@ -922,6 +925,24 @@ void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collap
     if (edgeWorst[i] > worst) worst = edgeWorst[i], worstSample = static_cast<std::uint8_t>(1 + i);
     if (edgeCorresponding[i] > worstCorresponding)
       worstCorresponding = edgeCorresponding[i], worstCorrespondingSample = static_cast<std::uint8_t>(1 + i);
+  }
+  if (peakSampled_ && c && !collapsed) {
+    // The edges' largest samples stand for their middles (where a quadratic vanishing at the
+    // corners peaks along them); a boundary chord, not sampled, is sampled at its middle for this.
+    double middle[3], peak[3];
+    for (int i = 0; i < 3; ++i) {
+      middle[i] = edgeWorst[i];
+      if (middle[i] < 0) {
+        double b[3] = {0.5, 0.5, 0.5}, unused = 0;
+        b[i] = 0;
+        middle[i] = sample(*c, b, unused, false);
+      }
+    }
+    if (quadraticDeviationPeak(middle, peak)) {
+      double unused = 0;
+      const double d = sample(*c, peak, unused, false);
+      if (d > worst) worst = d, worstSample = 0;
+    }
   }
   r.worstSample = worstSample;
   if (collapsed || worstCorresponding > pending.longest) {
@@ -1561,7 +1582,7 @@ bool FaceMesher::measuredWithin(cet::TriangleId t, const FaceMesh& mesh, double 
 }
 
 bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel) {
-  const double chordal = (exactDeviation_ ? kExactDeviationMargin : kDeviationMargin) * level.chordal;
+  const double chordal = deviationMargin() * level.chordal;
   const double minSize = 0.1 * level.chordal;  // no angular or orientation split below it (BRepMesh's MinSize)
   // The records keep cosines in float (about 6e-8 apart near the tolerance, 5e-7 of the angle):
   // the threshold sits a little inside the angle so that no rounding lets an edge past it.
@@ -1938,7 +1959,7 @@ void FaceMesher::makeLattice() {
   // A little inside the refinement's target: lattice triangles right at it, read a hair over (the
   // torus is not quite its quadratic), were split off the lattice (at 1.05 of it, a full torus of
   // 80 x 2.5 at 0.001 took 1.19x the triangles it took at 1.0; at 0.95, 1.05x).
-  spec.deviation = 0.95 * kDeviationMargin * settings_.finalChordal;
+  spec.deviation = 0.95 * deviationMargin() * settings_.finalChordal;
   spec.angle = settings_.finalAngle;
   spec.maxPoints = static_cast<double>(kRefineCeiling);
   lattice_ = std::make_unique<TorusLattice>(spec);

@@ -37,8 +37,9 @@ class WorkSharing;
 // its largest sampled value).
 constexpr double kDeviationMargin = 0.85;
 // Where a triangle's deviation is computed exactly (planes, cylinders, spheres: see
-// ElementaryDistance::triangleDeviation) only rounding and edge points a hair off the surface
-// separate it from the measured one.
+// ElementaryDistance::triangleDeviation), or read at its peak from closed-form distances (cones and
+// tori: deviation_peak.h), only rounding, the surface's terms beyond the quadratic and edge points a
+// hair off the surface separate it from the measured one.
 constexpr double kExactDeviationMargin = 0.98;
 
 struct FaceMesherSettings {
@@ -197,7 +198,9 @@ class FaceMesher {
                         TriangleRecord& r, Pending& pending) const;
   void finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const;
   // The record's deviation and worst sample from its samples (interior ones in `pending`).
-  static void conclude(TriangleRecord& r, const Pending& pending, bool collapsed);
+  // The triangle's deviation from its samples; with `c` on cones and tori also at the peak of the
+  // quadratic through its edges' middles (deviation_peak.h).
+  void conclude(TriangleRecord& r, const Pending& pending, bool collapsed, const Corners* c) const;
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
   bool onChord(cet::TriangleId t) const;  // t has a constrained (boundary) edge
@@ -484,6 +487,8 @@ class FaceMesher {
   bool fallback_ = false;
   bool freeform_ = false;  // doubly curved (sphere, torus, B-spline, ...): sampled more densely
   bool exactDeviation_ = false;  // triangles' deviations in closed form, not sampled
+  bool peakSampled_ = false;     // cones and tori: closed-form distances, and a sample at the peak
+  double deviationMargin() const { return exactDeviation_ || peakSampled_ ? kExactDeviationMargin : kDeviationMargin; }
   FaceStatus fallbackStatus_ = FaceStatus::kFallback;
   int boundaryLevel_ = -1;  // the level whose edge points the triangulator's boundary holds
   // How far refineBoundary() got towards level `target` when the cancel flag stopped it: the next
