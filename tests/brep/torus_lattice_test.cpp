@@ -66,11 +66,13 @@ double worstBetweenRows(const TorusLatticeSpec& spec, const TorusLattice& lattic
 }
 
 TEST(TorusLattice, TrianglesComeWithinTheDeviationAndNotFarUnder) {
-  // bottle's fillets at 0.01%; a full fat torus (its inside bends the other way); a thin ring.
+  // bottle's fillets at 0.01%; a full fat torus (its inside bends the other way); a thin ring; a
+  // sphere (major radius 0) from 70 degrees south to 70 north.
   const TorusLatticeSpec specs[] = {
       {82.9, 2.5, 0.02, 0.82, 0, M_PI / 2, 0.0082, 20 * M_PI / 180, 1e6},
       {3, 1, 0, 2 * M_PI, 0, 2 * M_PI, 0.001, 20 * M_PI / 180, 1e6},
       {20, 0.15, 0, M_PI, -M_PI / 2, M_PI / 2, 0.0005, 20 * M_PI / 180, 1e6},
+      {0, 5, 0, 2 * M_PI, -1.22, 1.22, 0.002, 20 * M_PI / 180, 1e6},
   };
   for (const TorusLatticeSpec& spec : specs) {
     SCOPED_TRACE("torus " + std::to_string(spec.major) + " x " + std::to_string(spec.minor));

@@ -1951,10 +1951,15 @@ void FaceMesher::makeLattice() {
   if (latticeMade_) return;
   latticeMade_ = true;
   const BRepAdaptor_Surface& surface = eval_.adaptor();
-  if (surface.GetType() != GeomAbs_Torus) return;
-  const gp_Torus torus = surface.Torus();
   TorusLatticeSpec spec;
-  spec.major = torus.MajorRadius(), spec.minor = torus.MinorRadius();
+  if (surface.GetType() == GeomAbs_Torus) {
+    const gp_Torus torus = surface.Torus();
+    spec.major = torus.MajorRadius(), spec.minor = torus.MinorRadius();
+  } else if (surface.GetType() == GeomAbs_Sphere) {
+    spec.major = 0, spec.minor = surface.Sphere().Radius();  // a torus without its ring
+  } else {
+    return;
+  }
   spec.u0 = eval_.uMin, spec.u1 = eval_.uMax, spec.v0 = eval_.vMin, spec.v1 = eval_.vMax;
   // A little inside the refinement's target: lattice triangles right at it, read a hair over (the
   // torus is not quite its quadratic), were split off the lattice (at 1.05 of it, a full torus of

@@ -123,12 +123,12 @@ class FaceMesher {
   // Interior refinement of level `levelIndex` to its tolerances; false when cancelled. Stops (and
   // sets refinementStopped_) past refinePointBound() new points.
   bool refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
-  // On a torus: moves the split (u, v) of triangle t to the nearest lattice point (torus_lattice.h)
+  // On a torus or a sphere: moves the split (u, v) of triangle t to the nearest lattice point (torus_lattice.h)
   // that still splits it (inside its circumcircle, in it or in a neighbour across a free edge),
   // keeps half a lattice step from the corners about it and is clear of the chords; else leaves it.
   void snapToLattice(cet::TriangleId t, double& u, double& v);
-  void makeLattice();  // at the first refinement: the face's lattice if it is a torus
-  std::unique_ptr<TorusLattice> lattice_;  // null off tori
+  void makeLattice();  // at the first refinement: the face's lattice if it is a torus or a sphere
+  std::unique_ptr<TorusLattice> lattice_;  // null off tori and spheres
   bool latticeMade_ = false;
   std::vector<LatticePoint> latticeNear_;                        // snapToLattice's candidates
   std::vector<std::pair<double, std::size_t>> latticeOrder_;     // and their order

@@ -32,8 +32,9 @@ void largestOver(double a, double b, double major, double minor, double& bend, d
 TorusLattice::TorusLattice(const TorusLatticeSpec& spec) : spec_(spec) {
   const double R = spec.major, r = spec.minor, d = spec.deviation;
   const double spanU = spec.u1 - spec.u0, spanV = spec.v1 - spec.v0;
-  // A ring torus only (the tube clear of the axis), a face with a box, a tolerance and an angle.
-  if (!(r > 0) || !(R > r) || !(d > 0) || !(spec.angle > 0) || !(spanU > 0) || !(spanV > 0)) return;
+  // A ring torus (the tube clear of the axis) or a sphere (major radius 0), a face with a box, a
+  // tolerance and an angle.
+  if (!(r > 0) || !(R > r || R == 0) || !(d > 0) || !(spec.angle > 0) || !(spanU > 0) || !(spanV > 0)) return;
   if (!std::isfinite(R) || !std::isfinite(spanU) || !std::isfinite(spanV)) return;
   // In the metric where the second fundamental form is the unit one (lengths round the tube over
   // sqrt(r), along it times sqrt(|cos v| / (R + r cos v))), an equilateral triangle of side h

@@ -1,5 +1,5 @@
-// Where the face mesher splits triangles on a torus: the points of a lattice that meets the final
-// level's deviation with the fewest points.
+// Where the face mesher splits triangles on a torus or a sphere: the points of a lattice that meets
+// the final level's deviation with the fewest points.
 //
 // Refinement that splits each triangle too far from the surface at its circumcentre packs points
 // unevenly: a triangle a little over its tolerance leaves, split there, triangles well under it. On
@@ -10,10 +10,12 @@
 // so that rows share columns). Its triangles deviate by their circumradius squared over 2 in that
 // metric: side sqrt(6 d) for a deviation d, 0.77 times the triangles of the right-angled grid that
 // BRepMesh lays on tori (sag d / 2 each way). On the tube's outside only (cos v > 0): its inside is
-// a saddle, where the refinement's own splits do better. Splits move to the lattice point nearest them (where
-// it still splits the triangle, see FaceMesher::snapToLattice), so every level takes lattice points
-// as it needs them and the final level tends to the lattice (bottle's fillets at 0.01%: 1294
-// triangles a face with circumcentres, BRepMesh 988).
+// a saddle, where the refinement's own splits do better. Splits move to the lattice point nearest
+// them (where it still splits the triangle, see FaceMesher::snapToLattice), so every level takes
+// lattice points as it needs them and the final level tends to the lattice (bottle's fillets at
+// 0.01%: 1294 triangles a face with circumcentres, BRepMesh 988). A sphere is parametrized as the
+// torus of major radius 0 (v its latitude), and takes the same lattice (a unit sphere at 0.001:
+// 9098 triangles with circumcentres, 7298 with it).
 #pragma once
 
 #include <vector>
@@ -21,7 +23,7 @@
 namespace cetview::brep {
 
 struct TorusLatticeSpec {
-  double major = 0, minor = 0;            // the torus's radii
+  double major = 0, minor = 0;            // the torus's radii (a sphere: 0 and its radius)
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  // the face's parameter box
   double deviation = 0;                   // the final level's target deviation of the lattice's triangles
   double angle = 0;                       // the final level's angle (radians): the normal's turn per step at most
