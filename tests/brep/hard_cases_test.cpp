@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -44,6 +45,7 @@
 #include <Geom_Ellipse.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
@@ -57,6 +59,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Vertex.hxx>
+#include <gp_Ax3.hxx>
 #include <gp_Circ.hxx>
 #include <gp_Elips.hxx>
 #include <gp_Pln.hxx>
@@ -820,6 +823,35 @@ TEST(HardCases, ASphereTakesTheLattice) {
     grid += static_cast<std::size_t>(mesh->NbTriangles());
   }
   EXPECT_LE(t->triangleCount(t->lastLevel()), grid * 3 / 4) << "BRepMesh " << grid;
+}
+
+// The lattice on faces of any outline: star-shaped UV polygons (5 to 9 corners, random radii and
+// angles) on tori (partly on the tube's inside) and spheres (up to near the poles), at two
+// deflections: the promise holds on every level (tessellateAndCheck), as everywhere else.
+TEST(HardCases, LatticeFacesOfRandomOutlinesKeepThePromise) {
+  std::mt19937 random(20261207);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const Handle(Geom_Surface) surfaces[] = {new Geom_ToroidalSurface(gp_Ax3(), 5, 1.5),
+                                           new Geom_SphericalSurface(gp_Ax3(), 3)};
+  for (int trial = 0; trial < 16; ++trial) {
+    const bool sphere = trial % 2 == 1;
+    // A centre and half-extents inside the surface's parameter range (a sphere's latitudes within
+    // +-1.45, short of its poles).
+    const double cu = 1 + 4 * unit(random), cv = sphere ? 0.9 * (unit(random) - 0.5) : 2 * M_PI * unit(random);
+    const double hu = 0.3 + 0.8 * unit(random), hv = sphere ? 0.2 + 0.35 * unit(random) : 0.3 + 1.2 * unit(random);
+    const int corners = 5 + trial % 5;
+    std::vector<gp_Pnt2d> polygon;
+    for (int k = 0; k < corners; ++k) {
+      const double angle = 2 * M_PI * (k + 0.8 * unit(random)) / corners, radius = 0.4 + 0.6 * unit(random);
+      polygon.emplace_back(cu + hu * radius * std::cos(angle), cv + hv * radius * std::sin(angle));
+    }
+    const double deflection = trial % 4 < 2 ? 0.001 : 0.0003;
+    SCOPED_TRACE(std::string(sphere ? "sphere" : "torus") + " trial " + std::to_string(trial));
+    const TopoDS_Face face = test::uvPolygonFace(surfaces[sphere ? 1 : 0], polygon);
+    auto model = test::loadShape(face, "lattice outline");
+    ASSERT_TRUE(model);
+    EXPECT_TRUE(test::tessellateAndCheck(*model, test::relative(deflection)));
+  }
 }
 
 // A cylinder written as a B-spline meshes as the cylinder does (disguised_surface.h): taken for a
