@@ -1824,7 +1824,8 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // the line puts the bend on edges of the mesh (6 flipped besides those across the knot; the
       // tube 8689 triangles, 1 flipped besides those across folds).
       if (forDeviation) ontoCreaseLine(t, mesh, u, v);
-      if (forDeviation) snapToLattice(t, u, v);
+      // (A point moved onto the lattice is clear of the chords: snapToLattice asked.)
+      const bool snapped = forDeviation && snapToLattice(t, u, v);
       // The chordal promise outranks the clearance (which only guards against folds): a triangle
       // too far from the surface is split at its worst sample regardless.
       const bool tooFar = r->deviation > reachable;
@@ -1837,9 +1838,9 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       const bool largeFlipped = flipped && r->longest > level.chordal && !onChord(t);
       // A fold point stays on the fold: taken where it keeps the chords' clearance, else not at all.
       bool override = !forFold && !forCrease && (tooFar || largeFlipped);
-      const bool safe = forFold || forCrease ? clearOfChords(u, v, true)
-                                             : (r->flags & TriangleRecord::kCollapsed) ||
-                                                   safeSplit(t, u, v, mesh, flipped, forAngle, at - 1);
+      const bool safe = snapped || (forFold || forCrease ? clearOfChords(u, v, true)
+                                                         : (r->flags & TriangleRecord::kCollapsed) ||
+                                                               safeSplit(t, u, v, mesh, flipped, forAngle, at - 1));
       // Overriding the clearance on the refinement's reading alone: where its few Gauss-Newton steps
       // stop short of the foot (a parametrisation far from uniform, its speed across a side 1e-4 of
       // that along it), the reading stays over the tolerance however near the chord the point comes,
@@ -1951,6 +1952,7 @@ void FaceMesher::makeLattice() {
   if (latticeMade_) return;
   latticeMade_ = true;
   const BRepAdaptor_Surface& surface = eval_.adaptor();
+  if (eval_.flat()) return;  // (never for tori and spheres; snapToLattice maps u and v on their own)
   TorusLatticeSpec spec;
   if (surface.GetType() == GeomAbs_Torus) {
     const gp_Torus torus = surface.Torus();
@@ -1971,16 +1973,16 @@ void FaceMesher::makeLattice() {
   if (lattice_->empty()) lattice_.reset();
 }
 
-void FaceMesher::snapToLattice(cet::TriangleId t, double& u, double& v) {
-  if (!lattice_) return;
+bool FaceMesher::snapToLattice(cet::TriangleId t, double& u, double& v) {
+  if (!lattice_) return false;
   lattice_->near(u, v, latticeNear_);
-  if (latticeNear_.empty()) return;
+  if (latticeNear_.empty()) return false;
   const cet::CetMesh& m = cdt_->mesh();
   const cet::Point2 p[3] = {cdt_->point(m.vertex(t, 0)), cdt_->point(m.vertex(t, 1)), cdt_->point(m.vertex(t, 2))};
   // The circumcircle, in scaled UV.
   const double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
   const double det = 2 * (bx * cy - by * cx);
-  if (!(std::abs(det) > 0)) return;
+  if (!(std::abs(det) > 0)) return false;
   const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
   const double ox = (cy * b2 - by * c2) / det, oy = (bx * c2 - cx * b2) / det;
   const double radius2 = ox * ox + oy * oy;
@@ -2010,31 +2012,43 @@ void FaceMesher::snapToLattice(cet::TriangleId t, double& u, double& v) {
     apex = cdt_->point(m.vertex(n, across.i));
     return true;
   };
-  // The candidates that split t and keep half a lattice step from its corners, nearest first; the
-  // first clear of the boundary chords is taken (a deviation split overrides the clearance, so a
-  // point moved towards a chord must not come closer than the chords allow).
-  const cet::Point2 q0 = scaled(u, v);
+  // The nearest candidate that splits t, keeps half a lattice step from the corners about it and
+  // is clear of the boundary chords (a deviation split overrides the clearance, so a point moved
+  // towards a chord must not come closer than the chords allow). Nearest in the scaled plane, as
+  // the axes' local slopes put it (each exact map is a search along the axis' pieces): most
+  // splits take their first candidate. (The scaled plane maps u and v each on its own: off flat
+  // faces, which have no lattice.)
+  const UvAxis& uAxis = eval_.uAxis();
+  const UvAxis& vAxis = eval_.vAxis();
+  const double x0 = uAxis.map(u), y0 = vAxis.map(v);
+  const double du = latticeNear_[0].step, dv = lattice_->vStep();
+  const double slopeU = (uAxis.map(u + du) - x0) / du, slopeV = (vAxis.map(v + dv) - y0) / dv;
   latticeOrder_.clear();
   for (std::size_t k = 0; k < latticeNear_.size(); ++k) {
+    const double ax = (latticeNear_[k].u - u) * slopeU, ay = (latticeNear_[k].v - v) * slopeV;
+    latticeOrder_.emplace_back(ax * ax + ay * ay, k);
+  }
+  std::sort(latticeOrder_.begin(), latticeOrder_.end());
+  const auto squared = [](const cet::Point2& a, const cet::Point2& b) {
+    return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+  };
+  for (const auto& [away, k] : latticeOrder_) {
     const LatticePoint& lp = latticeNear_[k];
-    const cet::Point2 q = scaled(lp.u, lp.v);
+    const cet::Point2 q{uAxis.map(lp.u), vAxis.map(lp.v)};
     if (!supported(q)) continue;
     const double dx = q.x - p[0].x - ox, dy = q.y - p[0].y - oy;
     if (!(dx * dx + dy * dy < 0.98 * radius2)) continue;
     cet::Point2 apex;
     if (!inCavity(q, apex)) continue;
-    const cet::Point2 along = scaled(lp.u + lp.step, lp.v), across = scaled(lp.u, lp.v + lattice_->vStep());
-    const double crowd = 0.5 * std::min(std::hypot(along.x - q.x, along.y - q.y), std::hypot(across.x - q.x, across.y - q.y));
-    bool crowded = std::hypot(apex.x - q.x, apex.y - q.y) < crowd;
-    for (int i = 0; i < 3; ++i) crowded = crowded || std::hypot(p[i].x - q.x, p[i].y - q.y) < crowd;
-    if (!crowded) latticeOrder_.emplace_back(std::hypot(q.x - q0.x, q.y - q0.y), k);
+    const double along = uAxis.map(lp.u + lp.step) - q.x, across = vAxis.map(lp.v + dv) - q.y;
+    const double crowd2 = 0.25 * std::min(along * along, across * across);
+    bool crowded = squared(apex, q) < crowd2;
+    for (int i = 0; i < 3; ++i) crowded = crowded || squared(p[i], q) < crowd2;
+    if (crowded || !clearOfChords(lp.u, lp.v, false)) continue;
+    u = lp.u, v = lp.v;
+    return true;
   }
-  std::sort(latticeOrder_.begin(), latticeOrder_.end());
-  for (const auto& [away, k] : latticeOrder_) {
-    if (!clearOfChords(latticeNear_[k].u, latticeNear_[k].v, false)) continue;
-    u = latticeNear_[k].u, v = latticeNear_[k].v;
-    return;
-  }
+  return false;
 }
 
 void FaceMesher::twinSingularCorners(FaceMesh& mesh) {

@@ -125,8 +125,9 @@ class FaceMesher {
   bool refine(int levelIndex, const Level& level, FaceMesh& mesh, const std::atomic<bool>* cancel);
   // On a torus or a sphere: moves the split (u, v) of triangle t to the nearest lattice point (torus_lattice.h)
   // that still splits it (inside its circumcircle, in it or in a neighbour across a free edge),
-  // keeps half a lattice step from the corners about it and is clear of the chords; else leaves it.
-  void snapToLattice(cet::TriangleId t, double& u, double& v);
+  // keeps half a lattice step from the corners about it and is clear of the chords (true); else
+  // leaves it (false).
+  bool snapToLattice(cet::TriangleId t, double& u, double& v);
   void makeLattice();  // at the first refinement: the face's lattice if it is a torus or a sphere
   std::unique_ptr<TorusLattice> lattice_;  // null off tori and spheres
   bool latticeMade_ = false;
