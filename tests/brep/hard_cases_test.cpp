@@ -805,7 +805,7 @@ TEST(HardCases, TorusFilletsMeshSparserThanBRepMeshsGrid) {
 }
 
 // A sphere takes the lattice of a torus without its ring (torus_lattice.h): a unit ball at 0.001,
-// 9098 triangles with circumcentre splits (0.90x BRepMesh's 10108), 7298 with it.
+// 9098 triangles with circumcentre splits (0.90x BRepMesh's 10108), 7288 with it.
 TEST(HardCases, ASphereTakesTheLattice) {
   const double chordal = 0.001;
   const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(1.0).Shape();
