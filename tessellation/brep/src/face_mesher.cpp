@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <GeomAbs_SurfaceType.hxx>
@@ -900,18 +901,22 @@ void FaceMesher::evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const
 }
 
 void FaceMesher::finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const {
-  const Corners c = corners(t, mesh);
+  std::optional<Corners> c;  // made when a sample needs it
+  const auto cornersOfT = [&]() -> const Corners& {
+    if (!c) c = corners(t, mesh);
+    return *c;
+  };
   for (int i = 0; i < 3; ++i) {
     if (!(pending.deferred >> i & 1u)) continue;
     if (edgeSamplesFromNeighbour(t, i, r.edgeDeviation[i], r.edgeCorresponding[i])) {
       pending.edgeWorst[i] = r.edgeDeviation[i], pending.edgeCorresponding[i] = r.edgeCorresponding[i];
     } else {
-      sampleEdge(c, i, pending.edgeWorst[i], pending.edgeCorresponding[i]);
+      sampleEdge(cornersOfT(), i, pending.edgeWorst[i], pending.edgeCorresponding[i]);
       r.edgeDeviation[i] = static_cast<float>(pending.edgeWorst[i]);
       r.edgeCorresponding[i] = static_cast<float>(pending.edgeCorresponding[i]);
     }
   }
-  conclude(r, pending, false, &c);
+  conclude(r, pending, false, peakSampled_ ? &cornersOfT() : nullptr);
 }
 
 void FaceMesher::conclude(TriangleRecord& r, const Pending& pending, bool collapsed, const Corners* c) const {
