@@ -198,9 +198,9 @@ class FaceMesher {
   void evaluateTriangle(cet::TriangleId t, const FaceMesh& mesh, const AngleSplit& angleSplit, int stamp,
                         TriangleRecord& r, Pending& pending) const;
   void finishTriangle(cet::TriangleId t, const FaceMesh& mesh, TriangleRecord& r, Pending& pending) const;
-  // The record's deviation and worst sample from its samples (interior ones in `pending`).
-  // The triangle's deviation from its samples; with `c` on cones and tori also at the peak of the
-  // quadratic through its edges' middles (deviation_peak.h).
+  // The record's deviation and worst sample from its samples (interior ones in `pending`); with
+  // `c`, on cones and tori, also from a sample where the quadratic through its edges' middles peaks
+  // (deviation_peak.h).
   void conclude(TriangleRecord& r, const Pending& pending, bool collapsed, const Corners* c) const;
   // The samples of edge i of t as the triangle across it measured them, if its record is current.
   bool edgeSamplesFromNeighbour(cet::TriangleId t, int i, float& deviation, float& corresponding) const;
