@@ -6,6 +6,22 @@
 
 namespace cetview::stream {
 
+bool firstLevelIsCheap(const brep::Model& model) {
+  if (model.faces().size() > 16 || model.edgeCount() > 64) return false;
+  return std::all_of(model.faces().begin(), model.faces().end(), [](const brep::FaceInfo& f) {
+    switch (f.kind) {
+      case brep::SurfaceKind::kPlane:
+      case brep::SurfaceKind::kCylinder:
+      case brep::SurfaceKind::kCone:
+      case brep::SurfaceKind::kSphere:
+      case brep::SurfaceKind::kTorus:
+        return true;
+      default:
+        return false;
+    }
+  });
+}
+
 ProgressiveStream::ProgressiveStream(brep::Tessellator& tessellator, int targetLevel, const StreamOptions& options)
     : tess_(tessellator), options_(options) {
   options_.threads = std::max(1u, options_.threads);
@@ -24,11 +40,24 @@ ProgressiveStream::ProgressiveStream(brep::Tessellator& tessellator, int targetL
   }
   target_ = std::clamp(targetLevel, 0, tess_.lastLevel());
   start_ = std::chrono::steady_clock::now();
+  if (options_.firstLevelOnCaller && firstLevelIsCheap(tess_.model())) makeFirstLevelHere();
   if (onKept_) {
     options_.kept->launch([this] { coordinate(); });
   } else {
     coordinator_ = std::thread([this] { coordinate(); });
   }
+}
+
+void ProgressiveStream::makeFirstLevelHere() {
+  onCaller_ = true;
+  inProgress_ = 0;
+  if (runLevel(0, 1) && publishLevelDone(0)) {
+    complete_ = 0;
+    firstLevelByCaller_ = true;
+  }
+  inProgress_ = -1;
+  cancel_ = false;
+  onCaller_ = false;
 }
 
 void ProgressiveStream::setUpRings() {
@@ -90,6 +119,7 @@ void ProgressiveStream::waitForLevel(int level, std::chrono::microseconds timeou
 }
 
 bool ProgressiveStream::waitForSpace() {
+  if (onCaller_) cancel_ = true;  // nobody reads yet: leave the level to the coordinator
   if (cancel_.load(std::memory_order_relaxed)) return false;
   std::this_thread::sleep_for(std::chrono::microseconds(200));
   return !cancel_.load(std::memory_order_relaxed);
@@ -107,40 +137,45 @@ void ProgressiveStream::coordinate() {
       inProgress_ = level;
       facesDone_ = 0;
     }
-    const bool done = runLevel(level);
+    const bool done = runLevel(level, options_.threads);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       inProgress_ = -1;
       if (done) complete_ = level;
     }
-    if (done) {
-      LevelDoneHeader h{};
-      h.level = static_cast<std::uint32_t>(level);
-      h.faces = static_cast<std::uint32_t>(order_.size());
-      h.triangles = tess_.triangleCount(level);
-      h.chordal = tess_.schedule()[static_cast<std::size_t>(level)].chordal;
-      h.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
-      RecordWriter writer(*control_);
-      const bool written = writer.write(&h, sizeof h, kLevelDone, [this] {
-        std::this_thread::yield();
-        return !stop_.load();
-      });
-      if (written) {
-        if (options_.onLevelPublished) options_.onLevelPublished();
-        {
-          std::lock_guard<std::mutex> lock(mutex_);
-          published_ = std::max(published_, level);
-        }
-        publishedChanged_.notify_all();
-      }
-    }
+    if (done) publishLevelDone(level);
   }
 }
 
-bool ProgressiveStream::runLevel(int level) {
-  const bool newEdges = tess_.edgeLevel() < level;
-  if (!tess_.discretiseEdges(level, options_.threads, &cancel_)) return false;
-  if (newEdges) publishEdges(level);
+bool ProgressiveStream::publishLevelDone(int level) {
+  LevelDoneHeader h{};
+  h.level = static_cast<std::uint32_t>(level);
+  h.faces = static_cast<std::uint32_t>(order_.size());
+  h.triangles = tess_.triangleCount(level);
+  h.chordal = tess_.schedule()[static_cast<std::size_t>(level)].chordal;
+  h.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+  RecordWriter writer(*control_);
+  const bool written = writer.write(&h, sizeof h, kLevelDone, [this] {
+    if (onCaller_) return false;
+    std::this_thread::yield();
+    return !stop_.load();
+  });
+  if (!written) return false;
+  if (options_.onLevelPublished) options_.onLevelPublished();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    published_ = std::max(published_, level);
+  }
+  publishedChanged_.notify_all();
+  return true;
+}
+
+bool ProgressiveStream::runLevel(int level, unsigned threads) {
+  if (!tess_.discretiseEdges(level, threads, &cancel_)) return false;
+  if (edgesPublished_ < level) {
+    if (!publishEdges(level)) return false;
+    edgesPublished_ = level;
+  }
   std::atomic<std::size_t> next{0};
   std::atomic<bool> cancelled{false};
   const auto work = [&](unsigned worker) {
@@ -169,11 +204,11 @@ bool ProgressiveStream::runLevel(int level) {
   };
   // Workers out of faces help the others' large faces (the end of every level; all of a model of
   // one big face).
-  tess_.runWorkers(options_.threads, work);
+  tess_.runWorkers(threads, work);
   return !cancelled.load();
 }
 
-void ProgressiveStream::publishEdges(int level) {
+bool ProgressiveStream::publishEdges(int level) {
   const auto edges = static_cast<brep::EdgeId>(tess_.model().edgeCount());
   std::vector<std::uint8_t> buffer(sizeof(EdgeLevelHeader));
   std::vector<float> xyz;
@@ -191,7 +226,8 @@ void ProgressiveStream::publishEdges(int level) {
   const EdgeLevelHeader h{static_cast<std::uint32_t>(level), count};
   std::memcpy(buffer.data(), &h, sizeof h);
   RecordWriter writer(*control_);
-  writer.write(buffer.data(), buffer.size(), kEdgeLevel, [this] {
+  return writer.write(buffer.data(), buffer.size(), kEdgeLevel, [this] {
+    if (onCaller_) return false;
     std::this_thread::yield();
     return !stop_.load();
   });

@@ -4,9 +4,11 @@
 // into their own SpscRing. A control ring carries one kLevelDone record per completed level.
 //
 // Threads: one coordinator runs the levels; per level it discretises the edges (all threads) and
-// then runs `threads` workers over the faces. A full ring makes its worker wait (back-pressure);
-// setTargetLevel() and the destructor cancel outstanding work at once (the tessellator checks the
-// flag between refinement passes), and a cancelled level resumes from its current state later.
+// then runs `threads` workers over the faces (a model whose level 0 is cheaper than waking them,
+// firstLevelIsCheap(), has its level 0 made by the constructor's caller instead). A full ring makes
+// its worker wait (back-pressure); setTargetLevel() and the destructor cancel outstanding work at
+// once (the tessellator checks the flag between refinement passes), and a cancelled level resumes
+// from its current state later.
 #pragma once
 
 #include <atomic>
@@ -38,7 +40,15 @@ struct StreamOptions {
   // stream holds them, else on a thread and rings of the stream's own. The tessellator's pool is
   // the caller's business (Tessellator::create(..., kept->pool())). Must outlive the stream.
   StreamThreads* kept = nullptr;
+  // Level 0 of a model for which firstLevelIsCheap() holds is made on the constructor's thread,
+  // before the coordinator starts (when the rings take it without waiting for a reader).
+  bool firstLevelOnCaller = true;
 };
+
+// A model of a few analytic faces (at most 16 faces of planes, cylinders, cones, spheres and tori,
+// 64 edges): its level 0 takes less than handing it to the coordinator and workers and waking the
+// consumer again (0.1-0.3 ms on a virtual machine), so the caller makes it at once.
+bool firstLevelIsCheap(const brep::Model& model);
 
 // A snapshot of progress, for panels and the terminal.
 struct StreamProgress {
@@ -75,15 +85,21 @@ class ProgressiveStream {
   SpscRing& controlRing() { return *control_; }
   // The coordinator runs on StreamOptions::kept (tests).
   bool onKeptThread() const { return onKept_; }
+  // Level 0 was made by the constructor's caller (StreamOptions::firstLevelOnCaller; tests).
+  bool firstLevelMadeByCaller() const { return firstLevelByCaller_; }
 
  private:
   void setUpRings();  // the kept rings, emptied, or rings of its own
   void coordinate();
-  bool runLevel(int level);
+  // Level 0 on the calling thread, without ever waiting for the reader that does not exist yet:
+  // when a ring is full the level is left, as if cancelled, to the coordinator.
+  void makeFirstLevelHere();
+  bool runLevel(int level, unsigned threads);
+  bool publishLevelDone(int level);  // false when the record could not be written
   void publishFace(RecordWriter& writer, std::vector<std::uint8_t>& buffer, brep::FaceId face, int level,
                    brep::FaceStatus status, std::uint32_t& sentVertices);
   bool waitForSpace();
-  void publishEdges(int level);
+  bool publishEdges(int level);  // false when the record could not be written
 
   brep::Tessellator& tess_;
   StreamOptions options_;
@@ -100,6 +116,9 @@ class ProgressiveStream {
   std::atomic<std::uint32_t> facesDone_{0};
   std::atomic<bool> cancel_{false};  // abandon the level in progress
   std::atomic<bool> stop_{false};    // shut down
+  int edgesPublished_ = -1;          // the last level whose edge record is written (by the level's runner)
+  bool onCaller_ = false;            // the constructor's caller runs level 0: never wait for ring space
+  bool firstLevelByCaller_ = false;
   int published_ = -1;               // the last level whose completion record is written (guarded by mutex_)
   mutable std::mutex mutex_;
   std::condition_variable wake_;

@@ -1,6 +1,7 @@
 // The progressive stream on the demo part: level-major completion, a consumer mirror equal to the
 // tessellator's own meshes, and a stress run of random tolerance changes and cancellations that
-// must end in the same mesh as a clean run (run under -DCETVIEW_SANITIZE=thread for races).
+// must end in the same mesh as a clean run (run under -DCETVIEW_SANITIZE=thread for races). And on
+// a model of six planes (occt-misc's wedge_ok.brep), whose level 0 the stream's caller makes.
 #include "stream/progressive_stream.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +9,8 @@
 #include <atomic>
 #include <chrono>
 #include <map>
+#include <mutex>
+#include <string>
 #include <random>
 #include <thread>
 
@@ -56,8 +59,8 @@ struct RecordingSink : MeshSink {
 struct Demo {
   std::unique_ptr<brep::Model> model;
   std::unique_ptr<brep::Tessellator> tess;
-  Demo() {
-    auto loaded = brep::loadModel("demo");
+  explicit Demo(const std::string& path = "demo") {
+    auto loaded = brep::loadModel(path);
     EXPECT_TRUE(loaded) << loaded.error;
     model = std::move(loaded.model);
     brep::MeshParams params;
@@ -67,6 +70,8 @@ struct Demo {
     tess = std::move(created.tessellator);
   }
 };
+
+const std::string kSixPlanes = std::string(CETVIEW_OCCT_DATA) + "/occ/wedge_ok.brep";
 
 // Polls until the consumer has level `level` complete (or a generous time limit passes).
 bool pollUntil(StreamConsumer& consumer, RecordingSink& sink, int level) {
@@ -147,11 +152,11 @@ TEST(ProgressiveStream, EachCompletedLevelWakesTheConsumer) {
   EXPECT_EQ(announced.load(), last + 1);
 }
 
-TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) {
+void randomTargetChangesEndInTheCleanMesh(const std::string& path) {
   std::vector<std::vector<float>> clean;
   int last = 0;
   {
-    Demo demo;
+    Demo demo(path);
     last = demo.tess->lastLevel();
     ProgressiveStream stream(*demo.tess, last, options(2, 1 << 20));
     StreamConsumer consumer(stream, demo.model->faces().size());
@@ -159,7 +164,7 @@ TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) {
     ASSERT_TRUE(pollUntil(consumer, sink, last));
     for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) clean.push_back(sink.trianglePositions(f));
   }
-  Demo demo;
+  Demo demo(path);
   ProgressiveStream stream(*demo.tess, 0, options(2, 1 << 14));
   StreamConsumer consumer(stream, demo.model->faces().size());
   RecordingSink sink;
@@ -177,6 +182,82 @@ TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) {
   for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) {
     EXPECT_EQ(sink.trianglePositions(f), clean[f]) << "face " << f << " differs from the clean run";
   }
+}
+
+TEST(ProgressiveStream, RandomTargetChangesEndInTheCleanMesh) { randomTargetChangesEndInTheCleanMesh("demo"); }
+
+TEST(ProgressiveStream, RandomTargetChangesOfASmallModelEndInTheCleanMesh) {
+  randomTargetChangesEndInTheCleanMesh(kSixPlanes);
+}
+
+// Which thread announced each level: the caller makes a small model's level 0 before the stream's
+// constructor returns (so the first frame does not wait for sleeping threads to wake), the
+// coordinator the rest; every level reaches the consumer and the final one mirrors the tessellator.
+std::vector<std::thread::id> announcers(Demo& demo, std::size_t ringBytes, bool firstLevelOnCaller,
+                                        bool& firstLevelReadyAtOnce) {
+  std::mutex mutex;
+  std::vector<std::thread::id> by;
+  StreamOptions o = options(2, ringBytes);
+  o.firstLevelOnCaller = firstLevelOnCaller;
+  o.onLevelPublished = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    by.push_back(std::this_thread::get_id());
+  };
+  const int last = demo.tess->lastLevel();
+  ProgressiveStream stream(*demo.tess, last, o);
+  StreamConsumer consumer(stream, demo.model->faces().size());
+  RecordingSink sink;
+  consumer.poll(1 << 20, sink);
+  firstLevelReadyAtOnce = consumer.completeLevel() >= 0;
+  EXPECT_EQ(firstLevelReadyAtOnce, stream.firstLevelMadeByCaller());
+  EXPECT_TRUE(pollUntil(consumer, sink, last));
+  for (std::uint32_t f = 0; f < demo.model->faces().size(); ++f) {
+    const brep::FaceMesh& mesh = demo.tess->faceMesh(f);
+    std::vector<float> expected;
+    for (std::uint32_t i : mesh.levels.back()) {
+      for (std::uint32_t c = 0; c < 3; ++c) expected.push_back(static_cast<float>(mesh.positions[3 * i + c]));
+    }
+    EXPECT_EQ(sink.trianglePositions(f), expected) << "face " << f;
+  }
+  stream.waitForLevel(last, std::chrono::hours(1));
+  std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_EQ(static_cast<int>(by.size()), last + 1);
+  return by;
+}
+
+TEST(ProgressiveStream, ASmallModelsFirstLevelIsMadeByTheCaller) {
+  Demo planes(kSixPlanes);
+  ASSERT_TRUE(firstLevelIsCheap(*planes.model));
+  ASSERT_GE(planes.tess->lastLevel(), 1);
+  bool atOnce = false;
+  auto by = announcers(planes, 1 << 20, true, atOnce);
+  ASSERT_FALSE(by.empty());
+  EXPECT_TRUE(atOnce) << "level 0 was not ready when the stream's constructor returned";
+  EXPECT_EQ(by[0], std::this_thread::get_id());
+  for (std::size_t k = 1; k < by.size(); ++k) EXPECT_NE(by[k], std::this_thread::get_id()) << "level " << k;
+
+  // Asked not to, or for a model that is not small, the coordinator makes every level.
+  Demo again(kSixPlanes);
+  by = announcers(again, 1 << 20, false, atOnce);
+  ASSERT_FALSE(by.empty());
+  EXPECT_NE(by[0], std::this_thread::get_id());
+  Demo demo;
+  EXPECT_FALSE(firstLevelIsCheap(*demo.model));
+  by = announcers(demo, 1 << 20, true, atOnce);
+  ASSERT_FALSE(by.empty());
+  EXPECT_NE(by[0], std::this_thread::get_id());
+}
+
+// Rings too small for level 0's records: the caller cannot wait for a reader that does not exist
+// yet (it would wait for ever), so it leaves the level to the coordinator, which ends in the same
+// mesh. Without that the constructor never returns and the test runs into ctest's time limit.
+TEST(ProgressiveStream, ASmallModelsFirstLevelGoesToTheCoordinatorWhenTheRingsAreFull) {
+  Demo planes(kSixPlanes);
+  bool atOnce = true;
+  const auto by = announcers(planes, 256, true, atOnce);
+  ASSERT_FALSE(by.empty());
+  EXPECT_FALSE(atOnce);
+  EXPECT_NE(by[0], std::this_thread::get_id());
 }
 
 TEST(ProgressiveStream, DestroyingMidLevelCancelsTheRest) {

@@ -4,12 +4,15 @@
 // against an idle frame. Headless at 1280x720 on the default Vulkan device (lavapipe without a GPU);
 // like the window, the loop draws a frame only when something new arrived.
 //   progressive_bench [--threads N] [--deflection 0.1%] [--repeat R] [--no-brepmesh]
-//                     [--direct-draws | --indirect-draws] [--fresh-threads] MODEL...
+//                     [--direct-draws | --indirect-draws] [--fresh-threads] [--first-level-on-workers]
+//                     MODEL...
 // (MODEL: a file or "demo"; --repeat loads each model R times, BRepMesh once; --no-brepmesh skips
 // the reference, for quick runs of the progressive side alone; --direct-draws and --indirect-draws
 // force one drawing path (gpu_scene.h) where the device would take the other, to compare them.
 // The tessellation threads are started before the first model loads and kept for all, as the
 // window keeps them (stream_threads.h); --fresh-threads has each model start its own instead.
+// --first-level-on-workers: a small model's level 0 is made by the stream's threads too, not by
+// the caller (StreamOptions::firstLevelOnCaller).
 // "idle cpu" is the CPU time of drawing one idle frame, driver included; "draws" its draw calls;
 // "1st faults" the process's page faults from the end of loading to the first complete frame: on
 // the project's virtual machines each costs about 10 us, so the memory a level first touches is
@@ -71,7 +74,7 @@ enum class Draws { kDefault, kDirect, kIndirect };
 
 Row measure(const std::string& path, const cetview::brep::MeshParams& params, unsigned threads,
             const cetview::engine::Device& device, bool reference, double brepmeshMs, Draws draws,
-            cetview::stream::StreamThreads* kept) {
+            cetview::stream::StreamThreads* kept, bool firstLevelOnCaller) {
   namespace brep = cetview::brep;
   namespace engine = cetview::engine;
   Row row;
@@ -124,6 +127,7 @@ Row measure(const std::string& path, const cetview::brep::MeshParams& params, un
   cetview::stream::StreamOptions options;
   options.threads = threads;
   options.kept = kept;
+  options.firstLevelOnCaller = firstLevelOnCaller;
   cetview::stream::ProgressiveStream producer(*created.tessellator, last, options);
   cetview::stream::StreamConsumer consumer(producer, row.faces);
   consumer.setShowLevel(last, link);
@@ -195,6 +199,7 @@ int main(int argc, char** argv) {
   bool reference = true;
   Draws draws = Draws::kDefault;
   bool freshThreads = false;
+  bool firstLevelOnCaller = true;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
@@ -206,6 +211,8 @@ int main(int argc, char** argv) {
       draws = Draws::kDirect;
     } else if (!std::strcmp(argv[i], "--fresh-threads")) {
       freshThreads = true;
+    } else if (!std::strcmp(argv[i], "--first-level-on-workers")) {
+      firstLevelOnCaller = false;
     } else if (!std::strcmp(argv[i], "--indirect-draws")) {
       draws = Draws::kIndirect;
     } else if (!std::strcmp(argv[i], "--deflection") && i + 1 < argc) {
@@ -228,8 +235,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "progressive_bench: %s\n", device.error().message.c_str());
     return 1;
   }
-  std::printf("device: %s, %u tessellation thread(s)%s, 1280x720%s\n", device->name.c_str(), threads,
-              freshThreads ? " started per model" : "",
+  std::printf("device: %s, %u tessellation thread(s)%s%s, 1280x720%s\n", device->name.c_str(), threads,
+              freshThreads ? " started per model" : "", firstLevelOnCaller ? "" : ", level 0 on them always",
               draws == Draws::kDirect     ? ", draws one by one"
               : draws == Draws::kIndirect ? ", indirect draws"
                                           : "");
@@ -242,7 +249,8 @@ int main(int argc, char** argv) {
   for (int run = 0; run < repeat * static_cast<int>(models.size()); ++run) {
     const std::string& m = models[static_cast<std::size_t>(run / repeat)];
     const Row row =
-        measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs, draws, kept.get());
+        measure(m, params, threads, *device, reference && run % repeat == 0, brepmeshMs, draws, kept.get(),
+                firstLevelOnCaller);
     brepmeshMs = row.brepmesh;
     const std::string name = m.size() > 34 ? "..." + m.substr(m.size() - 31) : m;
     if (!row.error.empty()) {
