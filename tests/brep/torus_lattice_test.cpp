@@ -1,6 +1,7 @@
 // The torus lattice (torus_lattice.h): its triangles, between neighbouring rows, come within the
-// deviation it was made for on the real torus, and not far under it; near() finds the nearest
-// points; tori it cannot serve get none.
+// deviation it was made for on the real torus, and not far under it; where the angle binds, the
+// normal turns within the angle along every lattice edge, and not far under it; near() finds the
+// nearest points; tori it cannot serve get none.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -85,6 +86,54 @@ TEST(TorusLattice, TrianglesComeWithinTheDeviationAndNotFarUnder) {
     // Equilateral where the tube bends most: the worst triangle uses nearly all of the deviation
     // (BRepMesh's grid of right triangles at half the deviation each way would be 0.77x as sparse).
     EXPECT_GE(worst, 0.9 * spec.deviation);
+  }
+}
+
+// The angle between the torus's normals at (u0, v0) and (u1, v1) (axis z).
+double normalTurn(double u0, double v0, double u1, double v1) {
+  const double a[3] = {std::cos(v0) * std::cos(u0), std::cos(v0) * std::sin(u0), std::sin(v0)};
+  const double b[3] = {std::cos(v1) * std::cos(u1), std::cos(v1) * std::sin(u1), std::sin(v1)};
+  return std::acos(std::clamp(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], -1.0, 1.0));
+}
+
+TEST(TorusLattice, WhereTheAngleBindsEveryEdgeTurnsTheNormalWithinIt) {
+  // A unit sphere and a torus of 3 x 1 at 1% of their boxes' diagonals, 20 degrees: the sag would
+  // allow edges turning the normal by 30 to 45 degrees. Every edge between neighbouring points, on
+  // a row and to the row above, turns within the angle, the longest nearly by all of it; rows on
+  // the tube's inside take points too.
+  const double angle = 20 * M_PI / 180;
+  const TorusLatticeSpec specs[] = {
+      {0, 1, 0, 2 * M_PI, -1.3, 1.3, 0.0346, angle, 1e6},
+      {3, 1, 0, 2 * M_PI, 0, 2 * M_PI, 0.0917, angle, 1e6},
+  };
+  for (const TorusLatticeSpec& spec : specs) {
+    SCOPED_TRACE("torus " + std::to_string(spec.major) + " x " + std::to_string(spec.minor));
+    const TorusLattice lattice(spec);
+    ASSERT_FALSE(lattice.empty());
+    double worst = 0;
+    int edges = 0, inside = 0;
+    for (int j = 1; j <= lattice.rowCount(); ++j) {
+      const std::vector<LatticePoint> row = lattice.row(j);
+      if (!row.empty() && std::cos(row[0].v) < 0) ++inside;
+      for (std::size_t i = 0; i + 1 < row.size(); ++i) {
+        worst = std::max(worst, normalTurn(row[i].u, row[i].v, row[i + 1].u, row[i + 1].v));
+        ++edges;
+      }
+      if (j == lattice.rowCount()) continue;
+      for (const LatticePoint& a : row) {
+        for (const LatticePoint& b : lattice.row(j + 1)) {
+          if (std::abs(b.u - a.u) > 0.5 * std::max(a.step, b.step) + 1e-12) continue;  // not a neighbour
+          worst = std::max(worst, normalTurn(a.u, a.v, b.u, b.v));
+          ++edges;
+        }
+      }
+    }
+    EXPECT_GT(edges, 100);
+    EXPECT_LE(worst, angle * (1 + 1e-9));
+    EXPECT_GE(worst, 0.9 * angle);
+    if (spec.major > 0) {
+      EXPECT_GT(inside, 2);
+    }
   }
 }
 

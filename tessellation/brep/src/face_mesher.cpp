@@ -1829,8 +1829,9 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
       // the line puts the bend on edges of the mesh (6 flipped besides those across the knot; the
       // tube 8689 triangles, 1 flipped besides those across folds).
       if (forDeviation) ontoCreaseLine(t, mesh, u, v);
-      // (A point moved onto the lattice is clear of the chords: snapToLattice asked.)
-      const bool snapped = forDeviation && snapToLattice(t, u, v);
+      // Splits for the deviation or the angle move onto the face's lattice, if it has one (a point
+      // moved there is clear of the chords: snapToLattice asked).
+      const bool snapped = (forDeviation || forAngle) && snapToLattice(t, u, v);
       // The chordal promise outranks the clearance (which only guards against folds): a triangle
       // too far from the surface is split at its worst sample regardless.
       const bool tooFar = r->deviation > reachable;
@@ -1873,7 +1874,7 @@ bool FaceMesher::refine(int levelIndex, const Level& level, FaceMesh& mesh, cons
         }
         continue;
       }
-      if (forAngle && safe && at > 0) keepRowWithinAngleOfChord(t, at - 1, mesh, angleSplit.minCos, u, v);
+      if (forAngle && safe && at > 0 && !snapped) keepRowWithinAngleOfChord(t, at - 1, mesh, angleSplit.minCos, u, v);
       if (settings_.trace) {
         std::fprintf(stderr, "pass %d: triangle %u (deviation %g, normal cosine %g, facet %g, longest %g, flags %d) split at (%.6f, %.6f)\n",
                      pass, t, r->deviation, r->normalCos, r->facetCos, r->longest, r->flags, u, v);

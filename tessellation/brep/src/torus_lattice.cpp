@@ -39,8 +39,13 @@ TorusLattice::TorusLattice(const TorusLatticeSpec& spec) : spec_(spec) {
   // In the metric where the second fundamental form is the unit one (lengths round the tube over
   // sqrt(r), along it times sqrt(|cos v| / (R + r cos v))), an equilateral triangle of side h
   // deviates by h^2 / 6: side sqrt(6 d), rows sqrt(3) / 2 of it apart.
+  // The angle: the normal turns by dv round the tube and by |cos v| du along it (the metric of the
+  // Gauss map, dv^2 + cos^2 v du^2), so an equilateral triangle there of side `angle` keeps it:
+  // rows sqrt(3) / 2 of the angle apart where the angle binds (at the angle itself, the triangles
+  // between rows turned by 1.15 times it and were split off the lattice: a unit sphere at 1%, 576
+  // triangles where the lattice takes 416).
   const double side = std::sqrt(6 * d);
-  double dv = std::min(0.5 * std::sqrt(3.0) * side / std::sqrt(r), spec.angle);
+  double dv = 0.5 * std::sqrt(3.0) * std::min(side / std::sqrt(r), spec.angle);
   double bend = 0, cosine = 0;
   largestOver(spec.v0, spec.v1, R, r, bend, cosine);
   double du = bend > 0 ? side / std::sqrt(bend) : spanU;
@@ -54,13 +59,17 @@ TorusLattice::TorusLattice(const TorusLatticeSpec& spec) : spec_(spec) {
     // The row's triangles reach the rows either side: its u step must do over [v - dv, v + dv].
     double rowBend = 0, rowCosine = 0;
     largestOver(v - dv_, v + dv_, R, r, rowBend, rowCosine);
-    double allowed = rowBend > 0 ? side / std::sqrt(rowBend) : HUGE_VAL;
-    if (rowCosine > 0) allowed = std::min(allowed, spec.angle / rowCosine);
+    const double forDeviation = rowBend > 0 ? side / std::sqrt(rowBend) : HUGE_VAL;
+    const double forAngle = rowCosine > 0 ? spec.angle / rowCosine : HUGE_VAL;
+    const double allowed = std::min(forDeviation, forAngle);
     int every = 1;
     while (every < kMaxEvery && 2 * every * du_ <= allowed) every *= 2;
-    // Only where the tube's outside bends both ways alike: on its inside (cos v < 0) the surface is a
-    // saddle, whose triangles deviate far less along its asymptotic lines than the lattice allows for.
-    if (!(std::cos(v) > 0)) every = 0;
+    // For the deviation, only where the tube's outside bends both ways alike: on its inside (cos v
+    // < 0) the surface is a saddle, whose triangles deviate far less along its asymptotic lines than
+    // the lattice allows for. The angle does not tell the two apart: where it asks for closer points
+    // than the deviation, the inside takes the lattice too (a torus of 3 x 1 at 1%: 1544 -> 1172
+    // triangles).
+    if (!(std::cos(v) > 0) && !(forAngle < forDeviation)) every = 0;
     rows_.push_back(Row{v, every, j % 2 == 1 ? 0.5 * every * du_ : every * du_});
   }
 }

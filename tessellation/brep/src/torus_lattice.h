@@ -10,8 +10,10 @@
 // so that rows share columns). Its triangles deviate by their circumradius squared over 2 in that
 // metric: side sqrt(6 d) for a deviation d, 0.77 times the triangles of the right-angled grid that
 // BRepMesh lays on tori (sag d / 2 each way). On the tube's outside only (cos v > 0): its inside is
-// a saddle, where the refinement's own splits do better. Splits move to the lattice point nearest
-// them (where it still splits the triangle, see FaceMesher::snapToLattice), so every level takes
+// a saddle, where the refinement's own splits do better. Where the angle binds (small radii, coarse
+// deflections) the lattice is equilateral in the metric of the normal's turn instead, side the
+// angle, and the inside takes it too. Splits for the deviation or the angle move to the lattice
+// point nearest them (where it still splits the triangle, see FaceMesher::snapToLattice), so every level takes
 // lattice points as it needs them and the final level tends to the lattice (bottle's fillets at
 // 0.01%: 1294 triangles a face with circumcentres, BRepMesh 988). A sphere is parametrized as the
 // torus of major radius 0 (v its latitude), and takes the same lattice (a unit sphere at 0.001:
