@@ -42,8 +42,8 @@ TorusLattice::TorusLattice(const TorusLatticeSpec& spec) : spec_(spec) {
   // The angle: the normal turns by dv round the tube and by |cos v| du along it (the metric of the
   // Gauss map, dv^2 + cos^2 v du^2), so an equilateral triangle there of side `angle` keeps it:
   // rows sqrt(3) / 2 of the angle apart where the angle binds (at the angle itself, the triangles
-  // between rows turned by 1.15 times it and were split off the lattice: a unit sphere at 1%, 576
-  // triangles where the lattice takes 416).
+  // between rows turned by up to 1.12 times it and were split off the lattice: a unit sphere at
+  // 1%, 576 triangles where the lattice takes 416).
   const double side = std::sqrt(6 * d);
   double dv = 0.5 * std::sqrt(3.0) * std::min(side / std::sqrt(r), spec.angle);
   double bend = 0, cosine = 0;
