@@ -838,9 +838,14 @@ void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) {
         }
         n[side] = du.Crossed(dv);
         speed[side] = (uDir ? du : dv).Magnitude();
-        // No normal, or one that is rounding noise (Su and Sv nearly parallel: a pole, a collapsed part).
+        // No normal, or one that is rounding noise (Su and Sv nearly parallel: a collapsed part; Su or
+        // Sv next to nothing against its mean, as regularNormal() judges: a pole, where the other's
+        // direction is noise too. A NURBS sphere's meridian at a knot read 36 degrees of turn at its
+        // poles and became a crease: triangles from a pole to two points on it, flat in its plane,
+        // took no facet test and stayed flipped).
         const double m = n[side].Magnitude();
-        normals = normals && std::isfinite(m) && m > kNoNormalSine * du.Magnitude() * dv.Magnitude();
+        normals = normals && std::isfinite(m) && m > kNoNormalSine * du.Magnitude() * dv.Magnitude() &&
+                  du.Magnitude() > 1e-7 * meanLu_ && dv.Magnitude() > 1e-7 * meanLv_;
       }
       if (!normals) continue;
       ++measured;
