@@ -969,7 +969,9 @@ void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) cons
 gp_Pnt SurfaceEval::point(double u, double v) const { return direct_ ? direct_->value(u, v) : surface_.Value(u, v); }
 
 void SurfaceEval::findDegenerateRows() {
-  const double uTol = 1e-9 * std::max(uMax - uMin, 1e-300), vTol = 1e-9 * std::max(vMax - vMin, 1e-300);
+  // A pcurve within a millionth of the range of an iso-line lies on it; points within 1e-9 of the
+  // range of the pcurve's span across it lie on the row.
+  const double uRange = std::max(uMax - uMin, 1e-300), vRange = std::max(vMax - vMin, 1e-300);
   for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
     if (!BRep_Tool::Degenerated(edge)) continue;
@@ -977,10 +979,14 @@ void SurfaceEval::findDegenerateRows() {
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face_, first, last);
     if (pcurve.IsNull() || !std::isfinite(first) || !std::isfinite(last)) continue;
     const gp_Pnt2d a = pcurve->Value(first), b = pcurve->Value(last), m = pcurve->Value(0.5 * (first + last));
-    if (std::abs(a.Y() - b.Y()) <= vTol && std::abs(a.Y() - m.Y()) <= vTol) {
-      degenerateRows_.push_back({false, a.Y()});
-    } else if (std::abs(a.X() - b.X()) <= uTol && std::abs(a.X() - m.X()) <= uTol) {
-      degenerateRows_.push_back({true, a.X()});
+    const double vSpan = std::max({a.Y(), b.Y(), m.Y()}) - std::min({a.Y(), b.Y(), m.Y()});
+    const double uSpan = std::max({a.X(), b.X(), m.X()}) - std::min({a.X(), b.X(), m.X()});
+    if (vSpan <= 1e-6 * vRange && uSpan > vSpan * uRange / vRange) {
+      degenerateRows_.push_back({false, 0.5 * (std::max({a.Y(), b.Y(), m.Y()}) + std::min({a.Y(), b.Y(), m.Y()})),
+                                 0.5 * vSpan + 1e-9 * vRange});
+    } else if (uSpan <= 1e-6 * uRange) {
+      degenerateRows_.push_back({true, 0.5 * (std::max({a.X(), b.X(), m.X()}) + std::min({a.X(), b.X(), m.X()})),
+                                 0.5 * uSpan + 1e-9 * uRange});
     }
   }
 }
@@ -990,8 +996,7 @@ bool SurfaceEval::onDegenerateRow(double u, double v) const {
     const bool periodic = row.uConstant ? uPeriodic_ : vPeriodic_;
     double d = (row.uConstant ? u : v) - row.value;
     if (periodic) d = std::remainder(d, row.uConstant ? surface_.UPeriod() : surface_.VPeriod());
-    const double tol = 1e-9 * std::max(row.uConstant ? uMax - uMin : vMax - vMin, 1e-300);
-    if (std::abs(d) <= tol) return true;
+    if (std::abs(d) <= row.tolerance) return true;
   }
   return false;
 }

@@ -271,10 +271,12 @@ class SurfaceEval {
   // The iso-lines of the face's degenerate edges (one 3D point each). A B-spline's degenerate row is
   // often not collapsed exactly: its points lie a micron apart, its first derivatives are small but
   // not noise, and the normal they give swings with the parameter along the row (measured: 80 to 150
-  // degrees from the normals a hundredth of the face away).
+  // degrees from the normals a hundredth of the face away). Nor is its pcurve always exactly an
+  // iso-line: trj4's face 404 has one whose ends lie 4e-9 apart across it.
   struct DegenerateRow {
     bool uConstant = false;  // u = value (else v = value)
     double value = 0;
+    double tolerance = 0;  // how far across it a point still lies on the row
   };
   void findDegenerateRows();
   bool onDegenerateRow(double u, double v) const;
