@@ -981,7 +981,7 @@ void SurfaceEval::findDegenerateRows() {
     const gp_Pnt2d a = pcurve->Value(first), b = pcurve->Value(last), m = pcurve->Value(0.5 * (first + last));
     const double vSpan = std::max({a.Y(), b.Y(), m.Y()}) - std::min({a.Y(), b.Y(), m.Y()});
     const double uSpan = std::max({a.X(), b.X(), m.X()}) - std::min({a.X(), b.X(), m.X()});
-    if (vSpan <= 1e-6 * vRange && uSpan > vSpan * uRange / vRange) {
+    if (vSpan <= 1e-6 * vRange && uSpan * vRange >= vSpan * uRange) {  // along u more than across (a point: v)
       degenerateRows_.push_back({false, 0.5 * (std::max({a.Y(), b.Y(), m.Y()}) + std::min({a.Y(), b.Y(), m.Y()})),
                                  0.5 * vSpan + 1e-9 * vRange});
     } else if (uSpan <= 1e-6 * uRange) {
