@@ -969,8 +969,8 @@ void SurfaceEval::d1(double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) cons
 gp_Pnt SurfaceEval::point(double u, double v) const { return direct_ ? direct_->value(u, v) : surface_.Value(u, v); }
 
 void SurfaceEval::findDegenerateRows() {
-  // A pcurve within a millionth of the range of an iso-line lies on it; points within 1e-9 of the
-  // range of the pcurve's span across it lie on the row.
+  // A pcurve within a millionth of the range of an iso-line marks that row; a point lies on the row
+  // within half the pcurve's span across it plus 1e-9 of the range.
   const double uRange = std::max(uMax - uMin, 1e-300), vRange = std::max(vMax - vMin, 1e-300);
   for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
