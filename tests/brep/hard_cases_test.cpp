@@ -804,20 +804,6 @@ TEST(HardCases, TorusFilletsMeshSparserThanBRepMeshsGrid) {
   }
 }
 
-// BRepMesh's triangles on a copy of `shape` at `chordal` and 20 degrees (0 if a face has none).
-std::size_t brepMeshTriangles(const TopoDS_Shape& shape, double chordal) {
-  const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape).Shape();
-  BRepMesh_IncrementalMesh(copy, chordal, Standard_False, 20 * M_PI / 180, Standard_False);
-  std::size_t triangles = 0;
-  for (TopExp_Explorer f(copy, TopAbs_FACE); f.More(); f.Next()) {
-    TopLoc_Location where;
-    const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(f.Current()), where);
-    if (mesh.IsNull()) return 0;
-    triangles += static_cast<std::size_t>(mesh->NbTriangles());
-  }
-  return triangles;
-}
-
 // A sphere takes the lattice of a torus without its ring (torus_lattice.h): a unit ball at 0.001,
 // 9098 triangles with circumcentre splits (0.90x BRepMesh's 10108), 7288 with it.
 TEST(HardCases, ASphereTakesTheLattice) {
@@ -827,7 +813,7 @@ TEST(HardCases, ASphereTakesTheLattice) {
   ASSERT_TRUE(model);
   auto t = test::tessellateAndCheck(*model, test::absolute(chordal));
   ASSERT_TRUE(t);
-  const std::size_t grid = brepMeshTriangles(ball, chordal);
+  const std::size_t grid = test::brepMeshTriangles(ball, chordal);
   ASSERT_GT(grid, 0u);
   EXPECT_LE(t->triangleCount(t->lastLevel()), grid * 3 / 4) << "BRepMesh " << grid;
 }
@@ -844,7 +830,7 @@ TEST(HardCases, WhereTheAngleBindsSpheresAndToriTakeTheLattice) {
     ASSERT_TRUE(model);
     auto t = test::tessellateAndCheck(*model, test::relative(0.01));
     ASSERT_TRUE(t);
-    const std::size_t grid = brepMeshTriangles(shape, t->chordal());
+    const std::size_t grid = test::brepMeshTriangles(shape, t->chordal());
     ASSERT_GT(grid, 0u);
     EXPECT_LE(static_cast<double>(t->triangleCount(t->lastLevel())), most * static_cast<double>(grid))
         << "BRepMesh " << grid;

@@ -7,13 +7,17 @@
 #include <cmath>
 #include <cstdio>
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepLib.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <Geom2d_Line.hxx>
+#include <Poly_Triangulation.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -167,6 +171,19 @@ std::unique_ptr<Tessellator> tessellateAndCheck(const Model& model, const MeshPa
     }
   }
   return std::move(created.tessellator);
+}
+
+std::size_t brepMeshTriangles(const TopoDS_Shape& shape, double chordal) {
+  const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape).Shape();
+  BRepMesh_IncrementalMesh(copy, chordal, Standard_False, 20 * M_PI / 180, Standard_False);
+  std::size_t triangles = 0;
+  for (TopExp_Explorer f(copy, TopAbs_FACE); f.More(); f.Next()) {
+    TopLoc_Location where;
+    const Handle(Poly_Triangulation) mesh = BRep_Tool::Triangulation(TopoDS::Face(f.Current()), where);
+    if (mesh.IsNull()) return 0;
+    triangles += static_cast<std::size_t>(mesh->NbTriangles());
+  }
+  return triangles;
 }
 
 }  // namespace cetview::brep::test

@@ -64,4 +64,8 @@ CheckOptions finalLevelOnly();
 MeshParams relative(double fraction, double angleDeg = 20);
 MeshParams absolute(double value, double angleDeg = 20);
 
+// BRepMesh_IncrementalMesh's triangles on a copy of `shape` at `chordal` and 20 degrees (0 if a face
+// has none).
+std::size_t brepMeshTriangles(const TopoDS_Shape& shape, double chordal);
+
 }  // namespace cetview::brep::test

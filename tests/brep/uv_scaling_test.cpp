@@ -3,8 +3,10 @@
 // the square root of the curvature without tolerances, by the steps the tolerances allow with
 // them. Checked on a torus (up to 10:1 without tolerances; a thin one much further with them), on
 // a cylinder (1000:1 with tolerances), on the cylinder written as a B-spline (as far between its
-// iso-lines, 30:1 within a curved outline), on the same torus written as a B-spline (a fillet as
-// STEP files carry them: free-form, up to 3:1), on a fillet along a gentle spine as a B-spline
+// iso-lines, 30:1 within a curved outline), on the same torus written as a B-spline (a torus in
+// disguise: as the torus) and moved off it at one pole (a fillet as STEP files carry them:
+// free-form, up to 3:1), on a sphere written as a B-spline (conformal, as the sphere), on a
+// fillet along a gentle spine as a B-spline
 // (curved a thousand times faster one way at every point: 10:1, as the analytic surfaces), on two
 // fuzzed ruled sheets that twist or are parametrised unevenly (3:1) and on a B-spline sheet curved
 // one way here and the other way there (no stretch). Within a B-spline span whose speed rises by
@@ -102,6 +104,27 @@ TEST(UvScaling, SphereIsConformal) {
   }
 }
 
+// The same sphere written as a rational B-spline (a sphere in disguise, ring_angles.h), whose
+// parameters are not its angles: conformal all the same, through the tables of its angles.
+TEST(UvScaling, SphereWrittenAsABSplineIsConformal) {
+  const Handle(Geom_BSplineSurface) spline =
+      GeomConvert::SurfaceToBSplineSurface(new Geom_SphericalSurface(gp_Ax3(), 7.0));
+  ASSERT_FALSE(spline.IsNull());
+  const SurfaceEval eval(BRepBuilderAPI_MakeFace(spline, 1e-7).Face(), 0.007, 20 * M_PI / 180);
+  ASSERT_TRUE(eval.ringAngles());
+  for (double f = 0.1; f < 0.95; f += 0.1) {
+    const double u = eval.uMin + 0.3 * (eval.uMax - eval.uMin), v = eval.vMin + f * (eval.vMax - eval.vMin);
+    const double h = 1e-6 * (eval.uMax - eval.uMin);
+    gp_Pnt p;
+    gp_Vec du, dv;
+    spline->D1(u, v, p, du, dv);
+    const cet::Point2 a = eval.scaled(u, v), b = eval.scaled(u + h, v), c = eval.scaled(u, v + h);
+    const double alongU = std::hypot(b.x - a.x, b.y - a.y) / (h * du.Magnitude());
+    const double alongV = std::hypot(c.x - a.x, c.y - a.y) / (h * dv.Magnitude());
+    EXPECT_NEAR(alongU / alongV, 1.0, 0.05) << "at " << f << " of v";
+  }
+}
+
 TEST(UvScaling, TorusRunsAlongItsTube) {
   // sqrt(k_round / k_along) from the patch's mean curvatures: about 4 (a torus may go to 10:1;
   // free-form faces stop at 3:1).
@@ -110,9 +133,20 @@ TEST(UvScaling, TorusRunsAlongItsTube) {
   EXPECT_LE(s, 10.0 + 1e-9);
 }
 
+// The torus patch written as a B-spline is the torus in disguise (ring_angles.h): it runs along its
+// tube as the torus does.
+TEST(UvScaling, BSplineTorusRunsAlongItsTubeAsTheTorus) {
+  const Handle(Geom_BSplineSurface) fillet = GeomConvert::SurfaceToBSplineSurface(torusPatch());
+  ASSERT_FALSE(fillet.IsNull());
+  EXPECT_NEAR(stretch(fillet), stretch(torusPatch()), 0.05 * stretch(torusPatch()));
+}
+
+// Moved a thousandth of its radius off the torus at one pole, it is a free-form fillet: 3:1 at most.
 TEST(UvScaling, BSplineFilletRunsAlongItsTubeAtMostThreeToOne) {
   const Handle(Geom_BSplineSurface) fillet = GeomConvert::SurfaceToBSplineSurface(torusPatch());
   ASSERT_FALSE(fillet.IsNull());
+  const gp_Pnt pole = fillet->Pole(2, 2);
+  fillet->SetPole(2, 2, pole.Translated(gp_Vec(kFrame.Direction()) * 1e-3), fillet->Weight(2, 2));
   const double s = stretch(fillet);
   EXPECT_GT(s, 2.0);
   EXPECT_LE(s, 3.0 + 1e-9);

@@ -114,7 +114,11 @@ class EdgeTable {
   // Fills levels_[e][level]; false, with the points half made, when `cancel` was raised meanwhile.
   bool discretiseEdge(EdgeId e, int level, const Level& tolerance, const std::atomic<bool>* cancel);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
-  static double arcSagBeside(const std::vector<FaceUse>& uses);  // the most an arc's chords may sag
+  double arcSagBeside(const std::vector<FaceUse>& uses);  // the most an arc's chords may sag
+  // The tube radius of face f if it is a torus or one in disguise (ring_angles.h), else 0; found
+  // once per face (tubeRadius_, NaN until then).
+  double tubeRadius(const FaceUse& use);
+  std::vector<double> tubeRadius_;
   void shareArcCountsOnCones();
 
   // Segment j of edge e (between its points j and j + 1) at the level at hand.

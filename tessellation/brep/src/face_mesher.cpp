@@ -1960,15 +1960,21 @@ void FaceMesher::makeLattice() {
   const BRepAdaptor_Surface& surface = eval_.adaptor();
   if (eval_.flat()) return;  // (never for tori and spheres; snapToLattice maps u and v on their own)
   TorusLatticeSpec spec;
-  if (surface.GetType() == GeomAbs_Torus) {
+  spec.u0 = eval_.uMin, spec.u1 = eval_.uMax, spec.v0 = eval_.vMin, spec.v1 = eval_.vMax;
+  const GeomAbs_SurfaceType type = surface.GetType();
+  if (type == GeomAbs_Torus) {
     const gp_Torus torus = surface.Torus();
     spec.major = torus.MajorRadius(), spec.minor = torus.MinorRadius();
-  } else if (surface.GetType() == GeomAbs_Sphere) {
+  } else if (type == GeomAbs_Sphere) {
     spec.major = 0, spec.minor = surface.Sphere().Radius();  // a torus without its ring
+  } else if (eval_.ringAngles()) {
+    ringAngles_ = eval_.ringAngles();
+    spec.major = ringAngles_->major, spec.minor = ringAngles_->minor;
+    spec.u0 = ringAngles_->ring.firstAngle(), spec.u1 = ringAngles_->ring.lastAngle();
+    spec.v0 = ringAngles_->tube.firstAngle(), spec.v1 = ringAngles_->tube.lastAngle();
   } else {
     return;
   }
-  spec.u0 = eval_.uMin, spec.u1 = eval_.uMax, spec.v0 = eval_.vMin, spec.v1 = eval_.vMax;
   // A little inside the refinement's target: lattice triangles right at it, read a hair over (the
   // torus is not quite its quadratic), were split off the lattice (at 1.05 of it, a full torus of
   // 80 x 2.5 at 0.001 took 1.19x the triangles it took at 1.0; at 0.95, 1.05x).
@@ -1979,9 +1985,29 @@ void FaceMesher::makeLattice() {
   if (lattice_->empty()) lattice_.reset();
 }
 
+void FaceMesher::latticePointsNear(double u, double v) {
+  latticeNear_.clear();
+  if (!ringAngles_) {
+    lattice_->near(u, v, latticeRaw_);
+    for (const LatticePoint& p : latticeRaw_) latticeNear_.push_back({p.u, p.v, p.step, lattice_->vStep()});
+    return;
+  }
+  // In the disguised surface's angles, and back: the lattice's u runs along the ring, its v round
+  // the tube.
+  const RingAngles& a = *ringAngles_;
+  const double ringParam = a.tubeAlongU ? v : u, tubeParam = a.tubeAlongU ? u : v;
+  lattice_->near(a.ring.angle(ringParam), a.tube.angle(tubeParam), latticeRaw_);
+  for (const LatticePoint& p : latticeRaw_) {
+    const double r = a.ring.param(p.u), t = a.tube.param(p.v);
+    const double rowStep = a.ring.param(p.u + p.step) - r, across = a.tube.param(p.v + lattice_->vStep()) - t;
+    if (!(rowStep > 0) || !(across > 0)) continue;  // at the box's end: no span to measure clearance by
+    latticeNear_.push_back(a.tubeAlongU ? LatticeCandidate{t, r, across, rowStep} : LatticeCandidate{r, t, rowStep, across});
+  }
+}
+
 bool FaceMesher::snapToLattice(cet::TriangleId t, double& u, double& v) {
   if (!lattice_) return false;
-  lattice_->near(u, v, latticeNear_);
+  latticePointsNear(u, v);
   if (latticeNear_.empty()) return false;
   const cet::CetMesh& m = cdt_->mesh();
   const cet::Point2 p[3] = {cdt_->point(m.vertex(t, 0)), cdt_->point(m.vertex(t, 1)), cdt_->point(m.vertex(t, 2))};
@@ -2027,7 +2053,7 @@ bool FaceMesher::snapToLattice(cet::TriangleId t, double& u, double& v) {
   const UvAxis& uAxis = eval_.uAxis();
   const UvAxis& vAxis = eval_.vAxis();
   const double x0 = uAxis.map(u), y0 = vAxis.map(v);
-  const double du = latticeNear_[0].step, dv = lattice_->vStep();
+  const double du = latticeNear_[0].stepU, dv = latticeNear_[0].stepV;
   const double slopeU = (uAxis.map(u + du) - x0) / du, slopeV = (vAxis.map(v + dv) - y0) / dv;
   latticeOrder_.clear();
   for (std::size_t k = 0; k < latticeNear_.size(); ++k) {
@@ -2039,14 +2065,14 @@ bool FaceMesher::snapToLattice(cet::TriangleId t, double& u, double& v) {
     return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
   };
   for (const auto& [away, k] : latticeOrder_) {
-    const LatticePoint& lp = latticeNear_[k];
+    const LatticeCandidate& lp = latticeNear_[k];
     const cet::Point2 q{uAxis.map(lp.u), vAxis.map(lp.v)};
     if (!supported(q)) continue;
     const double dx = q.x - p[0].x - ox, dy = q.y - p[0].y - oy;
     if (!(dx * dx + dy * dy < 0.98 * radius2)) continue;
     cet::Point2 apex;
     if (!inCavity(q, apex)) continue;
-    const double along = uAxis.map(lp.u + lp.step) - q.x, across = vAxis.map(lp.v + dv) - q.y;
+    const double along = uAxis.map(lp.u + lp.stepU) - q.x, across = vAxis.map(lp.v + lp.stepV) - q.y;
     const double crowd2 = 0.25 * std::min(along * along, across * across);
     bool crowded = squared(apex, q) < crowd2;
     for (int i = 0; i < 3; ++i) crowded = crowded || squared(p[i], q) < crowd2;

@@ -24,6 +24,7 @@
 #include "cet/triangulator.h"
 #include "face_topology.h"
 #include "surface_eval.h"
+#include "ring_angles.h"
 #include "torus_lattice.h"
 #include "triangle_records.h"
 
@@ -128,11 +129,21 @@ class FaceMesher {
   // keeps half a lattice step from the corners about it and is clear of the chords (true); else
   // leaves it (false).
   bool snapToLattice(cet::TriangleId t, double& u, double& v);
-  void makeLattice();  // at the first refinement: the face's lattice if it is a torus or a sphere
+  // At the first refinement: the face's lattice if it is a torus or a sphere, or a free-form one in
+  // disguise parametrized one angle per parameter (ring_angles.h).
+  void makeLattice();
+  // A lattice point in the face's parameters, with its row's step and the step between rows as
+  // spans of u and of v there.
+  struct LatticeCandidate {
+    double u, v, stepU, stepV;
+  };
+  void latticePointsNear(double u, double v);  // fills latticeNear_
   std::unique_ptr<TorusLattice> lattice_;  // null off tori and spheres
+  std::optional<RingAngles> ringAngles_;   // a disguised one's angles (its lattice is laid out in them)
   bool latticeMade_ = false;
-  std::vector<LatticePoint> latticeNear_;                        // snapToLattice's candidates
-  std::vector<std::pair<double, std::size_t>> latticeOrder_;     // and their order
+  std::vector<LatticePoint> latticeRaw_;                       // the lattice's points, in its angles
+  std::vector<LatticeCandidate> latticeNear_;                  // snapToLattice's candidates
+  std::vector<std::pair<double, std::size_t>> latticeOrder_;   // and their order
   bool flatRetry_ = false;          // this level's domain failed in the flat plane: the next tries it again
   bool refinementStopped_ = false;  // a level's refinement did not converge: later levels keep its interior
   int refineLevel_ = -1;            // the level refine() last ran, and its triangulator's points before it

@@ -132,6 +132,18 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   }
   findDegenerateRows();
   u0 = uMin, v0 = vMin;
+  {
+    const GeomAbs_SurfaceType kind = surface_.GetType();
+    if (kind == GeomAbs_BSplineSurface || kind == GeomAbs_BezierSurface || kind == GeomAbs_SurfaceOfRevolution ||
+        kind == GeomAbs_OffsetSurface) {
+      ringAngles_ = brep::ringAngles(
+          [this](double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
+            if (direct_) direct_->d1(u, v, p, du, dv);
+            else surface_.D1(u, v, p, du, dv);
+          },
+          uMin, uMax, vMin, vMax);
+    }
+  }
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
   double lu = 0, lv = 0, ku = 0, kv = 0;  // means
   double luMin = HUGE_VAL, luMax = 0, lvMin = HUGE_VAL, lvMax = 0;  // the speeds' range
@@ -190,7 +202,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   // makes slivers that fold on a wavy surface.
   const GeomAbs_SurfaceType type = surface_.GetType();
   const bool directional = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_SurfaceOfExtrusion ||
-                           type == GeomAbs_Torus;
+                           type == GeomAbs_Torus || (ringAngles_ && ringAngles_->major > 0);
   const bool freeformDirectional = !directional && (uTurns == n || vTurns == n);
   const double size = std::max(su * (uMax - uMin), sv * (vMax - vMin));
   // A smooth free-form face straight one way and untwisted at every grid point (a developable
@@ -248,6 +260,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
     buildAxis(true, uAxis_, uUneven);
     buildAxis(false, vAxis_, vUneven);
     if (surface_.GetType() == GeomAbs_Sphere) buildConformalSphereAxes();
+    else if (ringAngles_ && ringAngles_->major == 0) buildConformalDisguisedSphereAxes();
   } catch (const Standard_Failure&) {
     uAxis_.t = {u0}, uAxis_.x = {0.0}, uAxis_.slope = {su}, uAxis_.period = 0;
     vAxis_.t = {v0}, vAxis_.x = {0.0}, vAxis_.slope = {sv}, vAxis_.period = 0;
@@ -778,6 +791,33 @@ void SurfaceEval::buildConformalSphereAxes() {
     merc.t.push_back(t1);
   }
   vAxis_ = merc;
+}
+
+void SurfaceEval::buildConformalDisguisedSphereAxes() {
+  const RingAngles& a = *ringAngles_;
+  const double r = a.minor;
+  const double cosCap = std::cos(kConformalCapRad);
+  // Over the table's points: the analytic sphere's x of each angle.
+  const auto axisOf = [](const AngleTable& table, const auto& x) {
+    Axis axis;
+    const std::vector<double>& t = table.params();
+    const std::vector<double>& angle = table.angles();
+    axis.t = t;
+    axis.x = {0.0};
+    for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+      axis.x.push_back(axis.x.back() + x(angle[k], angle[k + 1]));
+      axis.slope.push_back((axis.x[k + 1] - axis.x[k]) / (t[k + 1] - t[k]));
+    }
+    return axis;
+  };
+  const Axis along = axisOf(a.ring, [r](double a0, double a1) { return r * (a1 - a0); });
+  // The latitude's conformal map: r / cos over each span, the cosine at its middle (kept off the
+  // poles as on the analytic sphere).
+  const Axis across = axisOf(a.tube, [r, cosCap](double a0, double a1) {
+    return r * (a1 - a0) / std::max(std::cos(0.5 * (a0 + a1)), cosCap);
+  });
+  uAxis_ = a.tubeAlongU ? across : along;
+  vAxis_ = a.tubeAlongU ? along : across;
 }
 
 void SurfaceEval::keepTurningBreaks(bool uDir, std::vector<double>& breaks) {

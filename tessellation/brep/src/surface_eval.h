@@ -18,6 +18,7 @@
 #include "bspline_direct.h"
 #include "cet/types.h"
 #include "elementary_distance.h"
+#include "ring_angles.h"
 #include "uv_axis.h"
 
 namespace cetview::brep {
@@ -130,6 +131,9 @@ class SurfaceEval {
   // cross in this one, and the mesher then builds that level in the scaled UV plane instead
   // (FaceMesher::buildDomainFlatOrScaled, useFlat()).
   bool flat() const { return flat_; }
+  // A free-form face that is a torus or a sphere in disguise, parametrized one angle per parameter
+  // (ring_angles.h): scaled as the torus or the sphere it is, and meshed on its lattice.
+  const std::optional<RingAngles>& ringAngles() const { return ringAngles_; }
   double flatThickness() const { return flatThickness_; }  // the poles' largest distance from the plane
   // Makes the face flat() if it is, for that chordal tolerance (the constructor calls it with its
   // own). The measure calls it too: on a flat face the triangles are straight in the plane, where
@@ -358,6 +362,10 @@ class SurfaceEval {
   static constexpr double kConformalSpanRad = 5 * M_PI / 180;
   static constexpr double kConformalCapRad = 88 * M_PI / 180;
   void buildConformalSphereAxes();
+  // The same for a sphere in disguise, through its angles: x along the ring r times the angle
+  // round the axis, y the conformal map of the latitude, each piecewise linear over its table.
+  void buildConformalDisguisedSphereAxes();
+  std::optional<RingAngles> ringAngles_;
   Axis uAxis_, vAxis_;
 
   // The flat face's plane (flat()).
