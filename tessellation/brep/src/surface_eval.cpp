@@ -185,6 +185,31 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   }
   lu /= n, lv /= n, ku /= n, kv /= n;
   meanLu_ = lu, meanLv_ = lv;
+  // Creases: the ends of the surface's C1 intervals inside its parameter range; a periodic
+  // direction's seam as well where the surface has any crease in that direction (its seam knot is
+  // then as likely C0 as the others; a seam wrongly taken for a crease only skips angle tests
+  // there, which the chordal test still covers).
+  auto creases = [&](bool uDir, std::vector<double>& out) {
+    const int count = uDir ? surface_.NbUIntervals(GeomAbs_C1) : surface_.NbVIntervals(GeomAbs_C1);
+    if (count < 2 || count > 100000) return;
+    TColStd_Array1OfReal t(1, count + 1);
+    if (uDir) {
+      surface_.UIntervals(t, GeomAbs_C1);
+    } else {
+      surface_.VIntervals(t, GeomAbs_C1);
+    }
+    const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
+    for (int i = periodic ? 1 : 2; i <= count; ++i) out.push_back(t(i));
+    std::sort(out.begin(), out.end());
+  };
+  try {
+    creases(true, uCreases_);
+    creases(false, vCreases_);
+    keepTurningBreaks(true, uCreases_);
+    keepTurningBreaks(false, vCreases_);
+  } catch (const Standard_Failure&) {
+    uCreases_.clear(), vCreases_.clear(), uBends_.clear(), vBends_.clear();
+  }
   const double extent2 = extent.IsVoid() ? 0 : extent.SquareExtent();
   gridArea_ = extent2 > 0 ? boxArea / extent2 : 0;
   const double floor = 1e-9 * std::max({lu, lv, 1e-300});
@@ -210,7 +235,7 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   // extrusion. (Not across creases: long triangles along a fold leave its ridge between their
   // samples; nor where the rulings twist: the normal turns along them.)
   const bool straightOneWay = freeformDirectional && std::min(kuMax, kvMax) * size < 1e-9 && twistMax * size < 1e-6 &&
-                              surface_.NbUIntervals(GeomAbs_C1) == 1 && surface_.NbVIntervals(GeomAbs_C1) == 1;
+                              uCreases_.empty() && vCreases_.empty();
   if ((directional || freeformDirectional) && std::max(ku, kv) * size > 1e-3) {
     double hu = 0, hv = 0, most = 0;
     if ((directional || straightOneWay) && chordal > 0 && angleRad > 0) {
@@ -267,31 +292,6 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
     uUneven.clear(), vUneven.clear();
   }
 
-  // Creases: the ends of the surface's C1 intervals inside its parameter range; a periodic
-  // direction's seam as well where the surface has any crease in that direction (its seam knot is
-  // then as likely C0 as the others; a seam wrongly taken for a crease only skips angle tests
-  // there, which the chordal test still covers).
-  auto creases = [&](bool uDir, std::vector<double>& out) {
-    const int count = uDir ? surface_.NbUIntervals(GeomAbs_C1) : surface_.NbVIntervals(GeomAbs_C1);
-    if (count < 2 || count > 100000) return;
-    TColStd_Array1OfReal t(1, count + 1);
-    if (uDir) {
-      surface_.UIntervals(t, GeomAbs_C1);
-    } else {
-      surface_.VIntervals(t, GeomAbs_C1);
-    }
-    const bool periodic = uDir ? uPeriodic_ : vPeriodic_;
-    for (int i = periodic ? 1 : 2; i <= count; ++i) out.push_back(t(i));
-    std::sort(out.begin(), out.end());
-  };
-  try {
-    creases(true, uCreases_);
-    creases(false, vCreases_);
-    keepTurningBreaks(true, uCreases_);
-    keepTurningBreaks(false, vCreases_);
-  } catch (const Standard_Failure&) {
-    uCreases_.clear(), vCreases_.clear(), uBends_.clear(), vBends_.clear();
-  }
   if (chordal > 0 && angleRad > 0) {
     // Knots the mesher must take for creases: the band the normal turns in is narrower than its
     // smallest angular split (a tenth of the tolerance, as BRepMesh's MinSize).
