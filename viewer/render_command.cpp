@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -146,7 +147,11 @@ int runRender(const RenderCli& cli) {
   ModelScene link(model, r.scene());
   int next = cli.levels ? 0 : last;
   consumer.setShowLevel(next, link);
-  const engine::Camera camera = engine::standardView(*view, link.bounds(), r.aspect(), projection);
+  // Fitted to the triangles' box at the first capture, as the window refits its first complete
+  // level: the B-rep's box takes a B-spline face's poles, which can reach far beyond its surface (a
+  // torus written as rational arcs of 120 degrees: a box 1.5 times as wide, the torus off its
+  // centre), and it can miss instances. Every later level is captured from the same camera.
+  std::optional<engine::Camera> camera;
 
   std::uint64_t pictures = 0;  // captured so far
   ProgressBar bar("render " + cli.model);
@@ -164,7 +169,11 @@ int runRender(const RenderCli& cli) {
     }
     simulateDeviceLossIfRequested(r, pictures++);
     if (auto s = r.finishUploads(); !s) return fail(1, engineErrorLine(s.error()));
-    auto image = r.capture(camera, style);
+    if (!camera) {
+      const engine::Bounds triangles = r.scene().bounds();
+      camera = engine::standardView(*view, triangles.empty() ? link.bounds() : triangles, r.aspect(), projection);
+    }
+    auto image = r.capture(*camera, style);
     if (!image) return fail(1, engineErrorLine(image.error()));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadedAt).count();
     const stream::LevelStat& stat = consumer.levelStats()[static_cast<std::size_t>(next)];
