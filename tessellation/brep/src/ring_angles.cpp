@@ -9,7 +9,7 @@
 namespace cetview::brep {
 namespace {
 
-constexpr double kRelative = 1e-7;  // of the torus's size (major plus minor radius): on it
+constexpr double kRelative = 1e-7;  // of a radius, or of the face's size (Ring::size): on it, the same
 constexpr double kAngle = 1e-7;     // radians: the same angle
 constexpr int kSamples = 9;         // per direction, for the check
 constexpr int kTableSteps = 64;     // per table
@@ -92,7 +92,7 @@ std::optional<Ring> fitRing(const Point& point, double r0, double r1, double t0,
   }
   gp_Vec x(ring.origin, centre[0]);
   x -= ring.z * x.Dot(ring.z);
-  if (!(x.Magnitude() > kRelative * (ring.major + ring.minor))) {
+  if (!(x.Magnitude() > kRelative * ring.size)) {
     // A sphere's first meridian centred on the axis: any direction across it.
     x = std::abs(ring.z.X()) < 0.9 ? gp_Vec(1, 0, 0) : gp_Vec(0, 1, 0);
     x -= ring.z * x.Dot(ring.z);

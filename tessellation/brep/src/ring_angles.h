@@ -43,8 +43,8 @@ struct RingAngles {
 // The surface over [u0, u1] x [v0, v1] as a ring torus (major radius above the minor one) or a
 // sphere parametrized one angle per parameter: every one of 9 x 9 samples within 1e-7 of the
 // face's size (the tube's radius plus the spread of the tube circles fitted) from it and at the
-// angles its parameters give. Nothing for any other surface (most
-// are given up on after four evaluations).
+// angles its parameters give. Nothing for any other surface (most are given up on after four
+// evaluations each way round, 2-4 us a face).
 std::optional<RingAngles> ringAngles(const SurfaceD1& d1, double u0, double u1, double v0, double v1);
 std::optional<RingAngles> ringAngles(const Adaptor3d_Surface& surface, double u0, double u1, double v0, double v1);
 
