@@ -1968,7 +1968,7 @@ void FaceMesher::makeLattice() {
   } else if (type == GeomAbs_Sphere) {
     spec.major = 0, spec.minor = surface.Sphere().Radius();  // a torus without its ring
   } else if (eval_.ringAngles()) {
-    ringAngles_ = eval_.ringAngles();
+    ringAngles_ = &*eval_.ringAngles();
     spec.major = ringAngles_->major, spec.minor = ringAngles_->minor;
     spec.u0 = ringAngles_->ring.firstAngle(), spec.u1 = ringAngles_->ring.lastAngle();
     spec.v0 = ringAngles_->tube.firstAngle(), spec.v1 = ringAngles_->tube.lastAngle();

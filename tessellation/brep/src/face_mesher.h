@@ -139,7 +139,7 @@ class FaceMesher {
   };
   void latticePointsNear(double u, double v);  // fills latticeNear_
   std::unique_ptr<TorusLattice> lattice_;  // null off tori and spheres
-  std::optional<RingAngles> ringAngles_;   // a disguised one's angles (its lattice is laid out in them)
+  const RingAngles* ringAngles_ = nullptr;  // a disguised one's angles (eval_'s; its lattice is laid out in them)
   bool latticeMade_ = false;
   std::vector<LatticePoint> latticeRaw_;                       // the lattice's points, in its angles
   std::vector<LatticeCandidate> latticeNear_;                  // snapToLattice's candidates

@@ -138,7 +138,7 @@ double AngleTable::angle(double param) const { return interpolate(params_, angle
 double AngleTable::param(double angle) const { return interpolate(angles_, params_, angle); }
 
 std::optional<RingAngles> ringAngles(const SurfaceD1& d1, double u0, double u1, double v0, double v1) {
-  if (!(u1 > u0) || !(v1 > v0)) return std::nullopt;
+  if (!(u1 > u0) || !(v1 > v0) || !std::isfinite(u1 - u0) || !std::isfinite(v1 - v0)) return std::nullopt;
   try {
     const auto at = [&](double u, double v) {
       gp_Pnt p;
