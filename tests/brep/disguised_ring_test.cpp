@@ -122,7 +122,7 @@ TEST(DisguisedRing, OtherSurfacesAreNotTakenForRings) {
 }
 
 // The promise on every level, no more triangles than BRepMesh, and at most 1.25 times the analytic
-// surface's at the same chordal deflection (0.1%: the NURBS torus 2302 against 2006; 0.01%: the
+// surface's at the same chordal deflection (0.1%: the NURBS torus 2296 against 2006; 0.01%: the
 // NURBS sphere 16504 against 14162).
 void expectMeshedAsTheAnalyticSurface(const TopoDS_Shape& analytic, const std::string& name) {
   const TopoDS_Shape nurbs = BRepBuilderAPI_NurbsConvert(analytic).Shape();
