@@ -253,23 +253,29 @@ TEST(UvScaling, WithTolerancesADevelopableBSplineRunsThirtyToOneWithinCurvedOutl
 // rational arcs joined at knots where the parametrisation is only C0, but the surface turns
 // smoothly across them. It is a developable face all the same (no crease: keepTurningBreaks), and
 // runs 1000:1 between its iso-lines; taken for creased by those knots, it ran 10:1 (hammer's
-// handle at 1%: 182 triangles where BRepMesh keeps both tolerances with 44). A cone folded along a
-// line has a crease there and stays at 10:1.
+// handle at 1%: 182 triangles where BRepMesh keeps both tolerances with 44). A half cylinder whose
+// arcs meet at a corner (the joint's column of poles moved out from the axis: its rulings stay
+// parallel, so it is straight one way and untwisted as before) has a crease there and stays at 10:1.
 TEST(UvScaling, WithTolerancesADevelopableBSplineOfSeveralArcsRunsAsOneOfOneArc) {
   const Handle(Geom_BSplineSurface) cone = GeomConvert::SurfaceToBSplineSurface(
       new Geom_RectangularTrimmedSurface(new Geom_ConicalSurface(kFrame, 0.2, 5.0), 0.0, M_PI, 0.0, 50.0));
   ASSERT_FALSE(cone.IsNull());
   ASSERT_GT(cone->NbUKnots(), 2) << "arcs joined at knots";
   EXPECT_NEAR(stretch(cone, 0.01, 20 * M_PI / 180), 1e-3, 1e-12);
-  // The column of poles the surface passes through at its first inner knot moved outwards: a kink.
-  const Handle(Geom_BSplineSurface) folded = Handle(Geom_BSplineSurface)::DownCast(cone->Copy());
-  const int column = folded->UMultiplicity(1) + folded->UMultiplicity(2) - folded->UDegree();
-  ASSERT_EQ(folded->UMultiplicity(2), folded->UDegree()) << "the arcs' joint is a pole";
-  for (int j = 1; j <= folded->NbVPoles(); ++j) {
-    const gp_Pnt p = folded->Pole(column, j);
-    folded->SetPole(column, j, p.Translated(gp_Vec(kFrame.XDirection()) * 0.5), folded->Weight(column, j));
+
+  const Handle(Geom_BSplineSurface) kinked = GeomConvert::SurfaceToBSplineSurface(
+      new Geom_RectangularTrimmedSurface(new Geom_CylindricalSurface(kFrame, 5.0), 0.0, M_PI, 0.0, 50.0));
+  ASSERT_FALSE(kinked.IsNull());
+  ASSERT_GT(kinked->NbUKnots(), 2) << "arcs joined at knots";
+  ASSERT_EQ(kinked->UMultiplicity(2), kinked->UDegree()) << "the arcs' joint is a pole";
+  EXPECT_NEAR(stretch(kinked, 0.01, 20 * M_PI / 180), 1e-3, 1e-12) << "smooth before the kink";
+  // The column of poles the surface passes through at its first inner knot.
+  const int column = kinked->UMultiplicity(1) + kinked->UMultiplicity(2) - kinked->UDegree();
+  for (int j = 1; j <= kinked->NbVPoles(); ++j) {
+    const gp_Pnt p = kinked->Pole(column, j);
+    kinked->SetPole(column, j, p.Translated(gp_Vec(kFrame.YDirection()) * 1.5), kinked->Weight(column, j));
   }
-  EXPECT_NEAR(stretch(folded, 0.01, 20 * M_PI / 180), 0.1, 1e-9);
+  EXPECT_NEAR(stretch(kinked, 0.01, 20 * M_PI / 180), 0.1, 1e-9);
 }
 
 TEST(UvScaling, TwistedRuledBSplineIsNotStretchedAsADevelopable) {
