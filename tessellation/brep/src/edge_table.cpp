@@ -304,22 +304,13 @@ double EdgeTable::tubeRadius(const FaceUse& use) {
   if (!std::isnan(r)) return r;
   r = 0;
   const BRepAdaptor_Surface surface(use.face, Standard_False);
-  switch (surface.GetType()) {
-    case GeomAbs_Torus:
-      r = surface.Torus().MinorRadius();
-      break;
-    case GeomAbs_BSplineSurface:
-    case GeomAbs_BezierSurface:
-    case GeomAbs_SurfaceOfRevolution:
-    case GeomAbs_OffsetSurface: {
-      double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-      BRepTools::UVBounds(use.face, u0, u1, v0, v1);
-      const std::optional<RingAngles> ring = ringAngles(surface, u0, u1, v0, v1);
-      if (ring && ring->major > 0) r = ring->minor;
-      break;
-    }
-    default:
-      break;
+  if (surface.GetType() == GeomAbs_Torus) {
+    r = surface.Torus().MinorRadius();
+  } else if (mayBeRing(surface.GetType())) {
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(use.face, u0, u1, v0, v1);
+    const std::optional<RingAngles> ring = ringAngles(surface, u0, u1, v0, v1);
+    if (ring && ring->major > 0) r = ring->minor;
   }
   return r;
 }

@@ -115,8 +115,8 @@ class EdgeTable {
   bool discretiseEdge(EdgeId e, int level, const Level& tolerance, const std::atomic<bool>* cancel);
   static double pcurveParameter(const Info& info, const FaceUse& use, double t);
   double arcSagBeside(const std::vector<FaceUse>& uses);  // the most an arc's chords may sag
-  // The tube radius of face f if it is a torus or one in disguise (ring_angles.h), else 0; found
-  // once per face (tubeRadius_, NaN until then).
+  // The tube radius of the used face if it is a torus or one in disguise (ring_angles.h), else 0;
+  // found once per face (tubeRadius_, NaN until then; the constructor alone asks).
   double tubeRadius(const FaceUse& use);
   std::vector<double> tubeRadius_;
   void shareArcCountsOnCones();

@@ -102,6 +102,15 @@ std::optional<Ring> fitRing(const Point& point, double r0, double r1, double t0,
   return ring;
 }
 
+// y at x on the polyline through (from[k], to[k]) (from increasing), held at its ends.
+double interpolate(const std::vector<double>& from, const std::vector<double>& to, double x) {
+  if (x <= from.front()) return to.front();
+  if (x >= from.back()) return to.back();
+  const std::size_t k = static_cast<std::size_t>(std::upper_bound(from.begin(), from.end(), x) - from.begin());
+  const double f = (x - from[k - 1]) / (from[k] - from[k - 1]);
+  return to[k - 1] + f * (to[k] - to[k - 1]);
+}
+
 // The angle along [a, b] in kTableSteps steps, continuous (no jump of 2 pi) and increasing (negated
 // when it falls); nothing unless strictly monotone.
 template <class Angle>
@@ -123,16 +132,6 @@ std::optional<AngleTable> tabulate(const Angle& angleAt, double a, double b) {
 
 AngleTable::AngleTable(std::vector<double> params, std::vector<double> angles)
     : params_(std::move(params)), angles_(std::move(angles)) {}
-
-namespace {
-double interpolate(const std::vector<double>& from, const std::vector<double>& to, double x) {
-  if (x <= from.front()) return to.front();
-  if (x >= from.back()) return to.back();
-  const std::size_t k = static_cast<std::size_t>(std::upper_bound(from.begin(), from.end(), x) - from.begin());
-  const double f = (x - from[k - 1]) / (from[k] - from[k - 1]);
-  return to[k - 1] + f * (to[k] - to[k - 1]);
-}
-}  // namespace
 
 double AngleTable::angle(double param) const { return interpolate(params_, angles_, param); }
 double AngleTable::param(double angle) const { return interpolate(angles_, params_, angle); }
@@ -156,7 +155,7 @@ std::optional<RingAngles> ringAngles(const SurfaceD1& d1, double u0, double u1, 
       // On the ring at every sample, its ring angle a function of the ring parameter alone and its
       // tube angle of the tube parameter alone (a sphere's poles have no ring angle).
       const double size = ring->size;
-      double ringAngles[kSamples], tubeAngles[kSamples];
+      double aroundAt[kSamples], tubeAt[kSamples];  // per column i, per row j
       bool ringSeen[kSamples] = {};
       bool fits = true;
       for (int i = 0; i < kSamples && fits; ++i) {
@@ -164,12 +163,12 @@ std::optional<RingAngles> ringAngles(const SurfaceD1& d1, double u0, double u1, 
           const gp_Pnt p = point(r0 + (r1 - r0) * i / (kSamples - 1), t0 + (t1 - t0) * j / (kSamples - 1));
           if (ring->offSurface(p) > kRelative * size) fits = false;
           const double tube = ring->tubeAngle(p);
-          if (i == 0) tubeAngles[j] = tube;
-          else if (angleGap(tube, tubeAngles[j]) > kAngle) fits = false;
+          if (i == 0) tubeAt[j] = tube;
+          else if (angleGap(tube, tubeAt[j]) > kAngle) fits = false;
           if (ring->radial(p) <= 1e-6 * size) continue;
           const double around = ring->ringAngle(p);
-          if (!ringSeen[i]) ringAngles[i] = around, ringSeen[i] = true;
-          else if (angleGap(around, ringAngles[i]) > kAngle) fits = false;
+          if (!ringSeen[i]) aroundAt[i] = around, ringSeen[i] = true;
+          else if (angleGap(around, aroundAt[i]) > kAngle) fits = false;
         }
       }
       if (!fits) continue;
@@ -189,6 +188,11 @@ std::optional<RingAngles> ringAngles(const SurfaceD1& d1, double u0, double u1, 
 std::optional<RingAngles> ringAngles(const Adaptor3d_Surface& surface, double u0, double u1, double v0, double v1) {
   return ringAngles([&surface](double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) { surface.D1(u, v, p, du, dv); },
                     u0, u1, v0, v1);
+}
+
+bool mayBeRing(GeomAbs_SurfaceType type) {
+  return type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface || type == GeomAbs_SurfaceOfRevolution ||
+         type == GeomAbs_OffsetSurface;
 }
 
 }  // namespace cetview::brep

@@ -12,6 +12,8 @@
 #include <optional>
 #include <vector>
 
+#include <GeomAbs_SurfaceType.hxx>
+
 #include "disguised_surface.h"
 
 namespace cetview::brep {
@@ -46,6 +48,8 @@ struct RingAngles {
 // angles its parameters give. Nothing for any other surface (most are given up on after four
 // evaluations each way round, 2-4 us a face).
 std::optional<RingAngles> ringAngles(const SurfaceD1& d1, double u0, double u1, double v0, double v1);
+// The kinds of surface a torus or a sphere can be written as (B-spline, Bezier, revolution, offset).
+bool mayBeRing(GeomAbs_SurfaceType type);
 std::optional<RingAngles> ringAngles(const Adaptor3d_Surface& surface, double u0, double u1, double v0, double v1);
 
 }  // namespace cetview::brep

@@ -132,17 +132,13 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   }
   findDegenerateRows();
   u0 = uMin, v0 = vMin;
-  {
-    const GeomAbs_SurfaceType kind = surface_.GetType();
-    if (kind == GeomAbs_BSplineSurface || kind == GeomAbs_BezierSurface || kind == GeomAbs_SurfaceOfRevolution ||
-        kind == GeomAbs_OffsetSurface) {
-      ringAngles_ = brep::ringAngles(
-          [this](double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
-            if (direct_) direct_->d1(u, v, p, du, dv);
-            else surface_.D1(u, v, p, du, dv);
-          },
-          uMin, uMax, vMin, vMax);
-    }
+  if (mayBeRing(surface_.GetType())) {
+    ringAngles_ = brep::ringAngles(
+        [this](double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
+          if (direct_) direct_->d1(u, v, p, du, dv);
+          else surface_.D1(u, v, p, du, dv);
+        },
+        uMin, uMax, vMin, vMax);
   }
   // Mean |Su|, |Sv| and normal curvatures along u and v on a 5x5 grid over the parameter box.
   double lu = 0, lv = 0, ku = 0, kv = 0;  // means
