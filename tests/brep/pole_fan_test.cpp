@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <filesystem>
 #include <string>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -85,6 +86,27 @@ TEST(PoleFan, ASheetDoubledOverFromAPoleRowIsFlippedOnlyAcrossItsFold) {
   EXPECT_EQ(q.degenerate, 0u);
   EXPECT_EQ(q.flipped, q.flippedAcrossFolds);
   EXPECT_LT(q.triangles, 40u);
+}
+
+// occt-misc's shell1.brep, face 40: a small B-spline sheet (0.68 x 0.41) with a pole row at v = 0,
+// where the sheet curls within about 1e-3 of the row: the normal's limit on the row turns 45 to
+// 126 degrees from the sheet's normal beside it. A pole vertex facing away from a triangle gets a
+// twin for it (FaceMesher::twinSingularCorners); showing that limit, the fan triangle beside it
+// shaded the curl over its whole width, and turned 44.5 degrees across its edge 0.046 long from the
+// pole (over the minimum size at 0.401, 1% of the part's box). The twin now shows the surface an
+// eighth of the way into the triangle.
+TEST(PoleFan, APoleTwinShowsTheSurfaceBesideThePoleRow) {
+  const std::string file = std::string(CETVIEW_OCCT_DATA) + "/occ/shell1.brep";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "occt-misc sample models not installed at " << CETVIEW_OCCT_DATA;
+  LoadResult loaded = loadModel(file);
+  ASSERT_TRUE(loaded) << loaded.error;
+  const auto t = test::tessellate(*loaded.model, test::absolute(0.40095));
+  ASSERT_TRUE(t);
+  constexpr FaceId kCurledFace = 40;
+  ASSERT_GT(loaded.model->faces().size(), kCurledFace);
+  const std::vector<FaceQuality> q = measureFaces(*t);
+  EXPECT_LE(q[kCurledFace].maxCornerAngle, t->angleRad() * (1 + 1e-4)) << q[kCurledFace].maxCornerAngle * 180 / M_PI;
+  EXPECT_EQ(q[kCurledFace].flipped, 0u);
 }
 
 }  // namespace

@@ -2097,12 +2097,15 @@ void FaceMesher::twinSingularCorners(FaceMesh& mesh) {
     for (int i = 0; i < 3; ++i) cu += mesh.uv[2 * out(v[i])] / 3, cv += mesh.uv[2 * out(v[i]) + 1] / 3;
     for (int i = 0; i < 3; ++i) {
       if (!singular_[v[i]] || singularTwins_.count(v[i]) || gp_Vec(normal_[v[i]]).Dot(side) >= 0) continue;
-      // The normal on the triangle's side: the first regular one on the way to its centroid.
+      // The normal on the triangle's side: the surface's an eighth of the way to its centroid, else
+      // the first regular one nearer (its limit at the point can be far from the surface beside it:
+      // shell1's face 40 curls within 1e-3 of its pole row, where the limit turns 45 degrees and more
+      // from the sheet; shown, it shaded the curl over the fan triangle's whole width).
       const std::size_t o = out(v[i]);
       const double u = mesh.uv[2 * o], w = mesh.uv[2 * o + 1];
       if (eval_.pinches(u, w, cu - u, cv - w, side))
         continue;  // a pole: its row has one point, not two sides
-      for (int k = SurfaceEval::kFoldBisections; k >= SurfaceEval::kFoldReach; --k) {
+      for (int k = SurfaceEval::kFoldReach; k <= SurfaceEval::kFoldBisections; ++k) {
         const double e = std::ldexp(1.0, -k);
         gp_Pnt p;
         gp_Dir n;

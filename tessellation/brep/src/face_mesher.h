@@ -422,7 +422,8 @@ class FaceMesher {
   std::uint32_t appendTwin(FaceMesh& mesh, cet::VertexId v, const gp_Dir& other);
   // Vertices without a first-derivative normal on a fold (a boundary point where the edge turns
   // back with the sheet): where a triangle's side faces away from one's normal, it gets a twin
-  // showing the normal on that side (the first regular one on the way to the triangle's centroid),
+  // showing the normal on that side (the surface's an eighth of the way to the triangle's centroid,
+  // else the first regular one nearer),
   // which the triangles on that side show. For the output alone: the refinement treats the vertex
   // as before (made a fold vertex, poles' rules no longer held for it, and fuzzed faces with
   // singular boundary points cascaded: 369 -> 42419 triangles). Run before each snapshot.
