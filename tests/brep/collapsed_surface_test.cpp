@@ -70,7 +70,7 @@ TEST(CollapsedSurface, HalfCollapsedToAPointIsNotRefinedThere) {
 // no area (BRepMesh: none there). The edge table takes no normal where the surface has no area.
 TEST(CollapsedSurface, AnEdgeBesideAPatchCollapsedOntoASegmentIsNotHalvedForNoise) {
   const std::vector<FaceQuality> levels =
-      test::testDataEveryLevel("collapsed_bilinear.brep", test::relative(0.0014130215179088082, 53.703135728999769));
+      test::testDataEveryLevel("collapsed_bilinear.brep", test::fuzzed("collapsed_bilinear.brep", 0.0014130215179088082, 53.703135728999769));
   ASSERT_FALSE(levels.empty());
   EXPECT_LE(levels.back().triangles, 400u) << "4095 with the edge halved for noise";
   EXPECT_LE(levels.back().degenerate, 100u) << "4041 with the edge halved for noise";
@@ -91,7 +91,7 @@ TEST(CollapsedSurface, AnEdgeBesideAPatchCollapsedOntoASegmentIsNotHalvedForNois
 // the check) are 72 degrees apart (open).
 TEST(CollapsedSurface, AFanCollapsedOntoAPointIsNotSplitOnAndOnBesideIt) {
   const std::vector<FaceQuality> levels =
-      test::testDataEveryLevel("collapsed_fan.brep", test::relative(0.055875193901701303, 27.75532158388647));
+      test::testDataEveryLevel("collapsed_fan.brep", test::fuzzed("collapsed_fan.brep", 0.055875193901701303, 27.75532158388647));
   ASSERT_FALSE(levels.empty());
   EXPECT_LE(levels.back().triangles, 5000u) << "91916 when the samples' short projections decide";
   EXPECT_LE(levels.back().flipped, 13u) << "19643 flipped";
@@ -107,7 +107,7 @@ TEST(CollapsedSurface, AFanCollapsedOntoAPointIsNotSplitOnAndOnBesideIt) {
 // that level, and the passes go on while a triangle waits beside one.
 TEST(CollapsedSurface, ATriangleWaitingBesideASplitThatCannotBeMadeIsStillSplit) {
   const std::vector<FaceQuality> levels = test::testDataEveryLevel(
-      "periodic_fan_between_two_points.brep", test::relative(0.00016081154893116633, 49.102388036926833));
+      "periodic_fan_between_two_points.brep", test::fuzzed("periodic_fan_between_two_points.brep", 0.00016081154893116633, 49.102388036926833));
   ASSERT_FALSE(levels.empty());
 }
 
@@ -121,7 +121,7 @@ TEST(CollapsedSurface, ATriangleWaitingBesideASplitThatCannotBeMadeIsStillSplit)
 TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAFan) {
   auto model = test::loadTestData("flat_periodic_sheet_from_a_pole.brep");
   ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.00054221631301118206, 21.797512779430839));
+  auto t = test::tessellate(*model, test::fuzzed("flat_periodic_sheet_from_a_pole.brep", 0.00054221631301118206, 21.797512779430839));
   ASSERT_TRUE(t);
   EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
   test::expectEveryLevelWithinTolerance(*t, 0);
@@ -137,7 +137,7 @@ TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAFan) {
 TEST(CollapsedSurface, AFanOntoAStraightSideIsNotSplitOnAndOnAlongIt) {
   const ScaledPlaneOnly scaledPlane;
   const std::vector<FaceQuality> levels =
-      test::testDataEveryLevel("fan_onto_straight_side.brep", test::relative(0.00079688600635591966, 26.06507972838941));
+      test::testDataEveryLevel("fan_onto_straight_side.brep", test::fuzzed("fan_onto_straight_side.brep", 0.00079688600635591966, 26.06507972838941));
   ASSERT_FALSE(levels.empty());
   for (const FaceQuality& q : levels) {
     EXPECT_LE(q.triangles, 1000u) << "66168 on the last level with the splits along the chord";
@@ -182,7 +182,7 @@ TEST_P(FanFromAPoleCorner, KeepsItsPointsOnTheInsideOfItsChords) {
   const ScaledPlaneOnly scaledPlane;
   const PoleCornerSheet& sheet = GetParam();
   const std::vector<FaceQuality> levels =
-      test::testDataEveryLevel(sheet.file, test::relative(sheet.deflection, sheet.angleDeg));
+      test::testDataEveryLevel(sheet.file, test::fuzzed(sheet.file, sheet.deflection, sheet.angleDeg));
   ASSERT_FALSE(levels.empty());
   for (const FaceQuality& q : levels) {
     EXPECT_LE(q.triangles, sheet.mostTriangles) << "10 times as many with points beyond the chords";
@@ -208,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(
 // within 5e-5 of the tolerance (BRepMesh: 431). Flipping the diagonal instead: 83, none flipped.
 TEST(CollapsedSurface, AFlippedTriangleIsPutRightByFlippingAnEdgeRatherThanBySplits) {
   const ScaledPlaneOnly scaledPlane;
-  MeshParams params = test::relative(0.001, 21.082475013351644);
+  MeshParams params = test::fuzzed("plane_fanning_from_a_pole_corner.brep", 0.001, 21.082475013351644);
   params.progressive = false;
   const std::vector<FaceQuality> levels = test::testDataEveryLevel("plane_fanning_from_a_pole_corner.brep", params);
   ASSERT_EQ(levels.size(), 1u);
@@ -280,7 +280,7 @@ TEST(CollapsedSurface, ATriangleWhoseAngleSplitIsDroppedIsStillHeldToTheToleranc
 }
 
 TEST(CollapsedSurface, RepairingFlipsDoNotUndoEachOther) {
-  tessellateWithoutAStop("half_collapsed_wavy_sheet.brep", test::relative(0.03, 5.0453192950331882));
+  tessellateWithoutAStop("half_collapsed_wavy_sheet.brep", test::fuzzed("half_collapsed_wavy_sheet.brep", 0.03, 5.0453192950331882));
 }
 
 // wavy_sheet_rebuilt_after_a_stop.brep (face_fuzz seed 2323, input 161): a sheet fanning from a
@@ -290,7 +290,7 @@ TEST(CollapsedSurface, RepairingFlipsDoNotUndoEachOther) {
 // on level 1 after 4096 passes". A vertex now keeps at most kMaxVertexPivotFlips a level.
 TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAVertexToThePassBound) {
   const Tessellated r = tessellateWithoutAStop("wavy_sheet_rebuilt_after_a_stop.brep",
-                                               test::relative(0.0012077769156757115, 9.1651789120317382));
+                                               test::fuzzed("wavy_sheet_rebuilt_after_a_stop.brep", 0.0012077769156757115, 9.1651789120317382));
   ASSERT_TRUE(r.t);
   test::expectEveryLevelWithinTolerance(*r.t, 0);
 }
@@ -307,7 +307,7 @@ TEST(CollapsedSurface, RepairingFlipsDoNotWalkAroundAVertexToThePassBound) {
 TEST(CollapsedSurface, ADomainRebuiltAfterAStoppedLevelIsRefined) {
   auto model = test::loadTestData("sheet_with_a_sliver_wire_rebuilt_at_level_1.brep");
   ASSERT_TRUE(model);
-  MeshParams params = test::relative(0.00180409753754177, 37.146486610208285);
+  MeshParams params = test::fuzzed("sheet_with_a_sliver_wire_rebuilt_at_level_1.brep", 0.00180409753754177, 37.146486610208285);
   params.maxPointsPerFaceLevel = 20;
   auto t = test::tessellate(*model, params);
   ASSERT_TRUE(t);
@@ -339,7 +339,7 @@ TEST(CollapsedSurface, AStripAMillionthOfItsLengthWideIsMeshed) {
 // 8.8x their tolerances, 10074 of 49472 triangles flipped. Slivers along a chord are not split.
 TEST(CollapsedSurface, SliversAlongABoundaryChordAreNotSplitTowardsIt) {
   const Tessellated r = tessellateWithoutAStop("zigzag_sheet_from_a_pole.brep",
-                                               test::relative(0.00067620056944267037, 45.724422064545664));
+                                               test::fuzzed("zigzag_sheet_from_a_pole.brep", 0.00067620056944267037, 45.724422064545664));
   ASSERT_TRUE(r.t);
   const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*r.t, 0);
   ASSERT_FALSE(levels.empty());

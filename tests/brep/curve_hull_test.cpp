@@ -126,7 +126,7 @@ TEST(CurveHull, SearchesOnlyWhereTheSamplesMayMiss) {
 TEST(CurveHull, AFuzzedEdgesHookIsFollowedFromLevelZero) {
   auto model = test::loadTestData("rational_hook_edge.brep");
   ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.00043998962443358706, 52.782482642862597), 1);
+  auto t = test::tessellate(*model, test::fuzzed("rational_hook_edge.brep", 0.00043998962443358706, 52.782482642862597), 1);
   ASSERT_TRUE(t);
   for (int k = 0; k <= 1; ++k)
     EXPECT_LE(measureFaces(*t, k).at(0).maxDeviation, t->schedule()[std::size_t(k)].chordal) << "level " << k;

@@ -120,7 +120,7 @@ TEST(FlatFreeForm, AWeightedFlatPatchTakesItsOutlineOnly) {
 // their splits made more. In its plane: two triangles a level, within 1e-6 of the tolerance.
 TEST(FlatFreeForm, AFlatSheetWithExtremeWeightsIsMeshedAsItsOutline) {
   const std::vector<FaceQuality> levels = test::testDataEveryLevel(
-      "flat_sheet_with_extreme_weights.brep", test::relative(0.0024064050719198024, 35.363088426031894));
+      "flat_sheet_with_extreme_weights.brep", test::fuzzed("flat_sheet_with_extreme_weights.brep", 0.0024064050719198024, 35.363088426031894));
   ASSERT_FALSE(levels.empty());
   for (const FaceQuality& q : levels) {
     EXPECT_EQ(q.flipped, 0u);
@@ -159,7 +159,7 @@ TEST_P(FlatSheetFanningFromAPole, IsMeshedInItsPlane) {
   const PoleSheet& sheet = GetParam();
   auto model = test::loadTestData(sheet.file);
   ASSERT_TRUE(model);
-  MeshParams params = test::relative(sheet.deflection, sheet.angleDeg);
+  MeshParams params = test::fuzzed(sheet.file, sheet.deflection, sheet.angleDeg);
   params.progressive = sheet.progressive;
   auto t = test::tessellate(*model, params);
   ASSERT_TRUE(t);
@@ -195,7 +195,7 @@ FlatSheetRun tessellateSheet(const char* file, double deflection, double angleDe
   FlatSheetRun run;
   auto model = test::loadTestData(file);
   if (!model) return run;
-  auto t = test::tessellate(*model, test::relative(deflection, angleDeg));
+  auto t = test::tessellate(*model, test::fuzzed(file, deflection, angleDeg));
   if (!t) return run;
   run.status = t->report(0).status;
   run.levels = test::expectEveryLevelWithinTolerance(*t, 0);

@@ -257,7 +257,7 @@ TEST(HardCases, ABoundaryChordCrossingAHoleOnlyInTheScaledPlaneIsHalved) {
 TEST(HardCases, AnEdgeSpanFarShorterThanItsSegmentIsSampled) {
   auto model = test::loadTestData("uneven_edge_span.brep");
   ASSERT_TRUE(model);
-  auto tessellated = test::tessellate(*model, test::relative(0.00015201004304370571, 57.905241474021516), 1);
+  auto tessellated = test::tessellate(*model, test::fuzzed("uneven_edge_span.brep", 0.00015201004304370571, 57.905241474021516), 1);
   ASSERT_TRUE(tessellated);
   const Tessellator& t = *tessellated;
   ASSERT_GE(t.lastLevel(), 1);
@@ -280,7 +280,7 @@ TEST(HardCases, AnEdgeSpanFarShorterThanItsSegmentIsSampled) {
 TEST(HardCases, AnEdgeAlongATinySpanIsNotHalvedForTheSurfaceBeyondTheSpan) {
   auto model = test::loadTestData("edge_along_a_tiny_span.brep");
   ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.00010830618008826698, 21.323338673990996));
+  auto t = test::tessellate(*model, test::fuzzed("edge_along_a_tiny_span.brep", 0.00010830618008826698, 21.323338673990996));
   ASSERT_TRUE(t);
   ASSERT_GE(t->lastLevel(), 6);
   std::size_t most = 0;
@@ -307,7 +307,7 @@ TEST(HardCases, AnEdgeAlongATinySpanIsNotHalvedForTheSurfaceBeyondTheSpan) {
 TEST(HardCases, AReadingThatStaysOverTheToleranceDoesNotMarchSplitsIntoAChord) {
   auto model = test::loadTestData("rational_pyramid.brep");
   ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.00028475719624698314, 27.141832608529793));
+  auto t = test::tessellate(*model, test::fuzzed("rational_pyramid.brep", 0.00028475719624698314, 27.141832608529793));
   ASSERT_TRUE(t);
   EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
   const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
@@ -325,7 +325,7 @@ TEST(HardCases, AReadingThatStaysOverTheToleranceDoesNotMarchSplitsIntoAChord) {
 TEST(HardCases, AKnotFarBelowTheSubdivisionDepthIsReached) {
   auto model = test::loadTestData("polyline_vertex_by_its_end.brep");
   ASSERT_TRUE(model);
-  MeshParams params = test::relative(0.001, 15.592126344701304);
+  MeshParams params = test::fuzzed("polyline_vertex_by_its_end.brep", 0.001, 15.592126344701304);
   params.progressive = false;
   auto t = test::tessellate(*model, params);
   ASSERT_TRUE(t);
@@ -1115,7 +1115,7 @@ TEST(HardCases, EdgeStrayingFromItsFaceWithinItsTolerance) {
 // distance, and the last level ended 1.16x its tolerance on the triangles beside those corners;
 // it aims at the larger of the two now.
 TEST(HardCases, CornersOffTheSurfaceWithinTheDeflectionKeepIt) {
-  test::testDataEveryLevel("corners_off_the_surface.brep", test::relative(0.0002466236895237274, 51.547951476310367));
+  test::testDataEveryLevel("corners_off_the_surface.brep", test::fuzzed("corners_off_the_surface.brep", 0.0002466236895237274, 51.547951476310367));
 }
 
 }  // namespace

@@ -129,7 +129,7 @@ TEST(Isolation, AThrowingFaceWhoseFallbackIsCancelledResumesToTheSameMesh) {
 TEST(Isolation, AFaceDeferredOnEveryLevelMeshesItsFallbackOnce) {
   auto model = test::loadTestData("crossing_boundary.brep");
   ASSERT_TRUE(model);
-  auto t = test::tessellate(*model, test::relative(0.001, 10.625467307545586));
+  auto t = test::tessellate(*model, test::fuzzed("crossing_boundary.brep", 0.001, 10.625467307545586));
   ASSERT_TRUE(t);
   const FaceId crossing = 1;
   ASSERT_EQ(t->report(crossing).status, FaceStatus::kFallback) << t->report(crossing).reason;
@@ -172,7 +172,7 @@ TEST(Isolation, AFaceReasonNamesEachRepairAndFailureOnce) {
 
   auto crossing = test::loadTestData("crossing_boundary.brep");
   ASSERT_TRUE(crossing);
-  auto c = test::tessellate(*crossing, test::relative(0.00011235273724638671, 10.625467307545586));
+  auto c = test::tessellate(*crossing, test::fuzzed("crossing_boundary.brep", 0.00011235273724638671, 10.625467307545586));
   ASSERT_TRUE(c);
   EXPECT_EQ(occurrences(c->report(1).reason, "inner wire ran counter-clockwise in UV; reversed"), 1u)
       << c->report(1).reason;
@@ -297,7 +297,7 @@ TEST(Isolation, ACoarseLevelWithoutAFallbackMeshLeavesTheNextLevelToCet) {
 TEST(Isolation, AFallbackCancelledAnywhereResumesToTheSameMesh) {
   auto model = test::loadTestData("crossing_boundary.brep");
   ASSERT_TRUE(model);
-  const MeshParams params = test::relative(0.00011235273724638671, 10.625467307545586);
+  const MeshParams params = test::fuzzed("crossing_boundary.brep", 0.00011235273724638671, 10.625467307545586);
   auto clean = test::tessellate(*model, params);
   ASSERT_TRUE(clean);
   auto cleanLevel0 = Tessellator::create(*model, params).tessellator;  // its reports after level 0
@@ -367,7 +367,7 @@ TEST(Isolation, AFaceStopsAtTheWorkBoundAndSaysSo) {
 TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
   auto model = test::loadTestData("edge_far_off_its_face.brep");
   ASSERT_TRUE(model);
-  auto tessellated = test::tessellate(*model, test::relative(0.00053658762185832064, 39.178301670862901), 1);
+  auto tessellated = test::tessellate(*model, test::fuzzed("edge_far_off_its_face.brep", 0.00053658762185832064, 39.178301670862901), 1);
   ASSERT_TRUE(tessellated);
   const Tessellator& t = *tessellated;
   std::size_t most = 0;
@@ -387,7 +387,7 @@ TEST(Isolation, AnEdgeStopsAtItsPointBoundAndItsFaceSaysSo) {
 TEST(Isolation, ABoundaryBuildStopsAtTheFlagAndIsBuiltAgainWhole) {
   auto model = test::loadTestData("edge_far_off_its_face.brep");
   ASSERT_TRUE(model);
-  const MeshParams params = test::relative(0.00053658762185832064, 39.178301670862901);
+  const MeshParams params = test::fuzzed("edge_far_off_its_face.brep", 0.00053658762185832064, 39.178301670862901);
   auto clean = test::tessellate(*model, params, 1);
   ASSERT_TRUE(clean);
   int stoppedInBuild = 0;
@@ -420,7 +420,7 @@ TEST(Isolation, ABoundaryBuildStopsAtTheFlagAndIsBuiltAgainWhole) {
 TEST(Isolation, AFaceThatFallsBackAfterAnEdgeStoppedSaysBoth) {
   auto model = test::loadTestData("edge_far_off_its_face.brep");
   ASSERT_TRUE(model);
-  auto tessellated = test::tessellate(*model, test::relative(0.00053658762185832064, 39.178301670862901));
+  auto tessellated = test::tessellate(*model, test::fuzzed("edge_far_off_its_face.brep", 0.00053658762185832064, 39.178301670862901));
   ASSERT_TRUE(tessellated);
   const FaceReport& r = tessellated->report(0);
   EXPECT_EQ(r.status, FaceStatus::kEmpty) << r.reason;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -16,6 +17,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <Geom2d_Line.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopExp_Explorer.hxx>
@@ -108,6 +110,16 @@ MeshParams relative(double fraction, double angleDeg) {
   p.chordal = {fraction, true};
   p.angleDeg = angleDeg;
   return p;
+}
+
+MeshParams fuzzed(const std::string& file, double fraction, double angleDeg) {
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  EXPECT_TRUE(BRepTools::Read(shape, (std::string(CETVIEW_BREP_TEST_DATA) + "/" + file).c_str(), builder)) << file;
+  Bnd_Box box;
+  if (!shape.IsNull()) BRepBndLib::Add(shape, box, Standard_False);
+  EXPECT_FALSE(box.IsVoid()) << file;
+  return absolute(box.IsVoid() ? fraction : fraction * std::sqrt(box.SquareExtent()), angleDeg);
 }
 
 MeshParams absolute(double value, double angleDeg) {

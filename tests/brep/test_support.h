@@ -63,6 +63,12 @@ CheckOptions finalLevelOnly();
 
 MeshParams relative(double fraction, double angleDeg = 20);
 MeshParams absolute(double value, double angleDeg = 20);
+// The tolerance face_fuzz found a tests/brep/data face's case at: `fraction` of the diagonal of the
+// file's shape's box as OpenCASCADE's quick bound gives it (BRepBndLib::Add without triangulation,
+// which takes a B-spline's control points), the box the loader took for relative deflections until
+// the fifty-second session (part_bounds.h). The reproductions keep the absolute tolerance of their
+// case: at the geometry's own box, some face a different tolerance and no longer reproduce it.
+MeshParams fuzzed(const std::string& file, double fraction, double angleDeg);
 
 // BRepMesh_IncrementalMesh's triangles on a copy of `shape` at `chordal` and 20 degrees (0 if a face
 // has none).

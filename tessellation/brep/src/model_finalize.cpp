@@ -32,6 +32,7 @@
 #include <TopoDS.hxx>
 
 #include "model_impl.h"
+#include "part_bounds.h"
 
 namespace cetview::brep {
 namespace {
@@ -263,33 +264,6 @@ std::string fixFalseDegenerateEdges(const TopoDS_Face& face) {
   std::snprintf(span, sizeof span, "%.3g", widest);
   return (fixed > 1 ? std::to_string(fixed) + " edges" : std::string("an edge")) + " flagged degenerated but spanning " +
          span + " on the surface: meshed as regular";
-}
-
-// A part's box; a face whose wires cannot bound its surface (a pcurve is still missing) can make
-// OpenCASCADE's box infinite, and then the edges' box stands for the part.
-Bounds partBounds(const TopoDS_Shape& shape) {
-  Bounds bounds;
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box, Standard_False);  // the optimal box costs seconds on B-spline models
-  constexpr double kInfinite = 1e99;  // OpenCASCADE's Precision::Infinite() is 2e100
-  if (!box.IsVoid() && !box.IsOpen() && box.SquareExtent() < kInfinite * kInfinite) {
-    double x0, y0, z0, x1, y1, z1;
-    box.Get(x0, y0, z0, x1, y1, z1);
-    bounds.add(x0, y0, z0);
-    bounds.add(x1, y1, z1);
-    if (std::max({std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1), std::abs(y1), std::abs(z1)}) < kInfinite)
-      return bounds;
-  }
-  bounds = Bounds();
-  Bnd_Box edges;
-  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) BRepBndLib::Add(e.Current(), edges, Standard_False);
-  if (!edges.IsVoid() && !edges.IsOpen()) {
-    double x0, y0, z0, x1, y1, z1;
-    edges.Get(x0, y0, z0, x1, y1, z1);
-    bounds.add(x0, y0, z0);
-    bounds.add(x1, y1, z1);
-  }
-  return bounds;
 }
 
 PartId addPart(ModelImpl& m, const TopoDS_Shape& shape, const std::string& name) {
