@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <BRepAdaptor_Curve.hxx>
@@ -28,7 +29,8 @@ bool finite(const gp_Pnt& p) {
   return std::abs(p.X()) < kInfinite && std::abs(p.Y()) < kInfinite && std::abs(p.Z()) < kInfinite;
 }
 
-// Coordinate `axis` of p, times `sign`: the direction a box side faces (6 of them: axis 0-2, sign +-1).
+// How far p reaches towards side `side` of a box (0-5: axis side / 2, its minimum's side where odd):
+// that coordinate, negated on a minimum's side.
 double reach(const gp_Pnt& p, int side) { return (side % 2 ? -1.0 : 1.0) * p.Coord(side / 2 + 1); }
 
 // One sampled curve or surface: its best sample towards each of the box's 6 sides, to be sharpened
@@ -156,7 +158,8 @@ Bounds partBounds(const TopoDS_Shape& shape) {
       if (!(s.lo[0] <= s.hi[0] && s.lo[1] <= s.hi[1]) ||
           !(std::max({std::abs(s.lo[0]), std::abs(s.hi[0]), std::abs(s.lo[1]), std::abs(s.hi[1])}) < kInfinite))
         continue;
-      // A B-spline bulges span by span: kSpanSamples a span (within the UV box), up to kMaxGrid.
+      // A B-spline bulges span by span: kSpanSamples segments for each of its knot spans each way
+      // over the UV box, up to kMaxGrid points.
       int n[2] = {kFaceGrid - 1, kFaceGrid - 1};
       if (surface->GetType() == GeomAbs_BSplineSurface) {
         const Handle(Geom_BSplineSurface) spline = surface->BSpline();
