@@ -126,11 +126,17 @@ TEST(PartBounds, ANarrowBumpBesideABroadOneReadsItsTop) {
 // Relative deflections are fractions of that box's diagonal: 1% of the NURBS torus is 0.01 x
 // sqrt(8^2 + 8^2 + 2^2).
 TEST(PartBounds, RelativeDeflectionIsAFractionOfTheGeometrysDiagonal) {
-  auto model = test::loadShape(BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeTorus(3, 1).Shape()).Shape(), "nurbs_torus");
+  const TopoDS_Shape torus = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeTorus(3, 1).Shape()).Shape();
+  auto model = test::loadShape(torus, "nurbs_torus");
   ASSERT_TRUE(model);
   auto t = Tessellator::create(*model, test::relative(0.01)).tessellator;
   ASSERT_TRUE(t);
   EXPECT_NEAR(t->chordal(), 0.01 * std::sqrt(132.0), 1e-8);
+  // The premise: 1% of the quick box's diagonal is far from that.
+  const Box quick = quickBox(torus);
+  double square = 0;
+  for (int i = 0; i < 3; ++i) square += (quick.max[i] - quick.min[i]) * (quick.max[i] - quick.min[i]);
+  EXPECT_GT(0.01 * std::sqrt(square), 1.2 * 0.01 * std::sqrt(132.0)) << "the premise";
 }
 
 }  // namespace
