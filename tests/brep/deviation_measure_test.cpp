@@ -176,6 +176,27 @@ TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
   test::testDataEveryLevel("ellipse_past_the_knots.brep", test::fuzzed("ellipse_past_the_knots.brep", 0.00056717801270646954, 34.027847714961467));
 }
 
+// sheet_folded_many_times_over_a_tiny_period.brep (face_fuzz seed 2121, input 102) is a B-spline
+// sheet periodic in u over 0.001 of parameter (six spans), nearly all of its poles one point: the
+// sheet folds over itself again and again within the period, and a point on it can lie on a part
+// 0.0008 of u away from the part its triangle's corners are on. At 0.0433% (tolerance 0.135) a
+// triangle of the last level, 4e-6 by 6e-5 in (u, v), read 0.2 (1.48x): no start over its own
+// (u, v) reached the feet of its samples, which lie within 0.0012 of the surface elsewhere in the
+// period. Past the tolerance the measure also starts from the nearest point of a grid over the
+// whole face.
+TEST(SheetFoldedOverATinyPeriod, ATriangleMeasuresItsDistanceToTheSheetElsewhereInThePeriod) {
+  const double uv[6] = {-999.99987852991057, -999.99931577296024, -999.9998831767856,
+                        -999.99937461328284, -999.99988007886896, -999.99933520011382};
+  const TopoDS_Face face = test::firstFace("sheet_folded_many_times_over_a_tiny_period.brep");
+  ASSERT_FALSE(face.IsNull());
+  EXPECT_LT(measuredTriangle(SurfaceEval(face), uv, 0.135), 0.01) << "0.2 from starts over the triangle alone";
+}
+
+TEST(SheetFoldedOverATinyPeriod, EveryLevelMeasuresWithinItsTolerance) {
+  test::testDataEveryLevel("sheet_folded_many_times_over_a_tiny_period.brep",
+                           test::absolute(0.13516312865484317, 33.896925307087812));
+}
+
 // zero_area_along_a_side.brep (face_fuzz seed 101, input 79): a rational patch whose u speed runs
 // from 0.06 to 3e8, meshed at 0.2406%. Level 1 (tolerance 706) has triangles without area along its
 // side u = 1, whose iso-line is a straight line in 3D that runs 20x faster near v = 0.36 than on
