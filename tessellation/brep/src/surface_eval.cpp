@@ -28,10 +28,13 @@ namespace cetview::brep {
 
 namespace {
 
-// A free-form face stretched as far as an analytic surface (see the constructor) bends this many
-// times faster one way than the other at every point of the 5x5 grid, twists at most this fraction
-// of its larger curvature there (|Suv . N| / (|Su| |Sv|)), and its speeds along u and along v each
-// stay within this factor over the grid.
+// A free-form face evenly one-way (see the constructor) bends kTubeRatio times faster one way than
+// the other at every point of the 5x5 grid, twists at most kOneWayTwist of its larger curvature
+// there (|Suv . N| / (|Su| |Sv|)), and its speeds along u and along v each stay within
+// kOneWaySpeeds over the grid. With the tolerances known it takes the steps they allow each way, up
+// to 10:1; without, the square-root rule, as far as an analytic surface (10:1) only where it bends
+// kOneWayRatio times faster one way.
+constexpr double kTubeRatio = 10;
 constexpr double kOneWayRatio = 1000;
 constexpr double kOneWayTwist = 0.5;
 constexpr double kOneWaySpeeds = 3;
@@ -234,8 +237,9 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
                               uCreases_.empty() && vCreases_.empty();
   if ((directional || freeformDirectional) && std::max(ku, kv) * size > 1e-3) {
     double hu = 0, hv = 0, most = 0;
-    if ((directional || straightOneWay) && chordal > 0 && angleRad > 0) {
-      // The largest curvature each way: the step must do where the surface bends most.
+    const bool tolerances = chordal > 0 && angleRad > 0;
+    // The steps the tolerances allow each way, where the surface bends most that way.
+    const auto toleranceSteps = [&] {
       const auto step = [&](double k) { return k > 0 ? std::min(angleRad / k, std::sqrt(8 * chordal / k)) : HUGE_VAL; };
       hu = step(kuMax), hv = step(kvMax);
       // A triangle long one way and short the other tilts off the surface by about its sag along
@@ -244,29 +248,43 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
       // refinement takes them for slivers, and a sliver split on its long edge makes more.
       if (kuMax > 0) hu = std::min(hu, std::sqrt(2 * hv / kuMax));
       if (kvMax > 0) hv = std::min(hv, std::sqrt(2 * hu / kvMax));
+    };
+    // A free-form face evenly one-way: at every grid point it bends kTubeRatio times faster one
+    // way than the other, twists at most half as fast as it bends (the twist sags the diagonals of
+    // triangles long one way), and its speeds are even (one scale a direction then gives triangles
+    // the shape in 3D that it gives them in the scaled plane). Fuzzed ruled faces twisting faster
+    // or parametrised unevenly took more triangles at 10:1 and more of them flipped; r0901's face
+    // 65 (a fillet of radius 0.5 along a curved spine, bending 140 times faster round than along,
+    // but slowing into a degenerate corner) flipped triangles at that corner.
+    const bool evenlyOneWay = freeformDirectional && std::max(uOverV, vOverU) >= kTubeRatio &&
+                              twistOverBend <= kOneWayTwist && luMax <= kOneWaySpeeds * luMin &&
+                              lvMax <= kOneWaySpeeds * lvMin;
+    if ((directional || straightOneWay) && tolerances) {
+      toleranceSteps();
       // 1000:1 at most on an analytic surface, which bends the same way all along it, and on a
       // developable free-form face bounded by iso-lines (a wing's skin between its ribs); 30:1 on
       // other developable free-form faces, whose boundary pcurves may curve across the long
       // direction (at 100:1 the Delaunay triangulation joins three points of such a curve: a
       // flipped triangle).
       most = directional || boundedByIsoLines(face, uMax - uMin, vMax - vMin) ? 1e-3 : 1.0 / 30;
+    } else if (evenlyOneWay && tolerances) {
+      // An evenly one-way free-form face (a tube along a spine, a fillet, a wing's skin) takes the
+      // steps the tolerances allow as the analytic surfaces do, up to 10:1: its curvature still
+      // varies along the stretch. By the square-root rule Ball.brep's tubes (radius 0.2 along
+      // spines bending 20 to 30 times slower) ran 3:1 where the angle allows steps 20 to 30 times
+      // longer along them than round them: 5592 triangles at 1% against BRepMesh's 4215 (now 3212).
+      toleranceSteps();
+      most = 0.1;
     } else {
       const double kmin = 1e-300;
       hu = 1 / std::sqrt(std::max(ku, kmin)), hv = 1 / std::sqrt(std::max(kv, kmin));
       // 10:1 at most on analytic surfaces; 3:1 on free-form faces, whose curvature still varies along
-      // the stretch. But 10:1 on a free-form face that is evenly one-way (a wing's or a fuselage's
-      // skin, a fillet along a gentle spine): at every grid point it bends a thousand times faster
-      // one way than the other (the square-root rule asks for 30:1 even where it is least one-way,
-      // three times the stretch given), twists at most half as fast as it bends (the twist sags the
-      // diagonals of triangles long one way), and its speeds are even (one scale a direction then
-      // gives triangles the shape in 3D that it gives them in the scaled plane). A319's skins took
-      // 10384 triangles at 0.1% with 3:1, 6094 with 10:1 (BRepMesh 6595). Fuzzed ruled faces
-      // twisting faster or parametrised unevenly took more triangles at 10:1 and more of them
-      // flipped; r0901's face 65 (a fillet of radius 0.5 along a curved spine, bending 140 times
-      // faster round than along) flipped triangles at its degenerate corner.
-      const bool evenlyOneWay = std::max(uOverV, vOverU) >= kOneWayRatio && twistOverBend <= kOneWayTwist &&
-                                luMax <= kOneWaySpeeds * luMin && lvMax <= kOneWaySpeeds * lvMin;
-      most = directional || evenlyOneWay ? 0.1 : 1.0 / 3;
+      // the stretch. But 10:1 on a free-form face that bends a thousand times faster one way than the
+      // other at every grid point, evenly one-way otherwise (a wing's or a fuselage's skin, a fillet
+      // along a gentle spine): the square-root rule asks for 30:1 even where it is least one-way,
+      // three times the stretch given. A319's skins took 10384 triangles at 0.1% with 3:1, 6094
+      // with 10:1 (BRepMesh 6595). (Without tolerances: with them, the steps they allow, above.)
+      most = directional || (evenlyOneWay && std::max(uOverV, vOverU) >= kOneWayRatio) ? 0.1 : 1.0 / 3;
     }
     const double h = std::min(hu, hv);
     su *= std::max(h / hu, most);
