@@ -38,6 +38,9 @@ constexpr double kTubeRatio = 10;
 constexpr double kOneWayRatio = 1000;
 constexpr double kOneWayTwist = 0.5;
 constexpr double kOneWaySpeeds = 3;
+// A free-form face straight one way (a ruled B-spline) is developable where its normal turns along
+// a whole ruling by less than this (radians; see the constructor).
+constexpr double kDevelopableTwist = 1e-4;
 
 // True when every edge of the face runs along an iso-line of the surface in UV (its pcurve a line
 // parallel to the u or the v axis, or a B-spline or Bezier curve whose poles all lie on one: the
@@ -232,9 +235,14 @@ SurfaceEval::SurfaceEval(const TopoDS_Face& face, double chordal, double angleRa
   // A smooth free-form face straight one way and untwisted at every grid point (a developable
   // B-spline: a wing's skin, a swept profile, a cone written as a B-spline) bends like an
   // extrusion. (Not across creases: long triangles along a fold leave its ridge between their
-  // samples; nor where the rulings twist: the normal turns along them.)
-  const bool straightOneWay = freeformDirectional && std::min(kuMax, kvMax) * size < 1e-9 && twistMax * size < 1e-6 &&
-                              uCreases_.empty() && vCreases_.empty();
+  // samples; nor where the rulings twist: the normal turns along them.) Untwisted: the normal
+  // turns along a whole ruling by under kDevelopableTwist radians (twistMax * size), and a
+  // triangle w wide running the face's length sags off it by about twistMax * w * size / 4, under
+  // a quarter of 0.01% of the size. occ/wing.brep's skins, lofted between ribs, turn by 1.2e-5:
+  // held to 1e-6 (rounding) they were meshed as curved free-form faces, 440 triangles at 1% where
+  // BRepMesh takes 298 (now 70).
+  const bool straightOneWay = freeformDirectional && std::min(kuMax, kvMax) * size < 1e-9 &&
+                              twistMax * size < kDevelopableTwist && uCreases_.empty() && vCreases_.empty();
   if ((directional || freeformDirectional) && std::max(ku, kv) * size > 1e-3) {
     double hu = 0, hv = 0, most = 0;
     const bool tolerances = chordal > 0 && angleRad > 0;
