@@ -182,8 +182,8 @@ TEST(FacePastItsKnots, EveryLevelMeasuresWithinItsTolerance) {
 // 0.0008 of u away from the part its triangle's corners are on. At 0.0433% (tolerance 0.135) a
 // triangle of the last level, 4e-6 by 6e-5 in (u, v), read 0.2 (1.48x): no start over its own
 // (u, v) reached the feet of its samples, which lie within 0.0012 of the surface elsewhere in the
-// period. Past the tolerance the measure also starts from the nearest point of a grid over the
-// whole face.
+// period (nor does the nearest point of a 1000 x 1000 grid over the face). Past the tolerance the
+// measure also starts from the feet of the triangle's other samples.
 TEST(SheetFoldedOverATinyPeriod, ATriangleMeasuresItsDistanceToTheSheetElsewhereInThePeriod) {
   const double uv[6] = {-999.99987852991057, -999.99931577296024, -999.9998831767856,
                         -999.99937461328284, -999.99988007886896, -999.99933520011382};
