@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -416,6 +417,47 @@ void expectCleanLastLevel(const std::string& file, const MeshParams& params, std
 TEST(UvScaling, AHeightFieldWithATinyLastSpanIsMeshedWithoutSlivers) {
   expectCleanLastLevel("height_field_with_a_tiny_last_span.brep",
                        test::fuzzed("height_field_with_a_tiny_last_span.brep", 0.00015201004304370571, 57.905241474021516), 30000);
+}
+
+// rational_patch_packed_against_a_knot.brep (face_fuzz seed 2727, input 97): a rational patch,
+// weights 0.001 to 38, whose first u span's speed rises from 4e-4 at the face's side to about 1000
+// within the span's last thousandth (845 on one side of the knot, 21 on the other): most of the
+// face in 3D lies within 0.002 of its u. At the span's one scale, triangles well shaped in the
+// scaled plane lay flipped in 3D there; at 0.191% and 31.6 degrees level 0 took 171319 triangles,
+// 43841 flipped outside folds, and the last level 1.14 million, 273 thousand flipped. The span's
+// fast end is now divided after its speed: 28219 triangles on the last level, none flipped
+// outside folds (16 across the fold, two corners' normals opposed).
+TEST(UvScaling, ARationalPatchPackedAgainstAKnotIsScaledAlongItsFastEnd) {
+  const std::vector<FaceQuality> levels =
+      test::testDataEveryLevel("rational_patch_packed_against_a_knot.brep",
+                               test::fuzzed("rational_patch_packed_against_a_knot.brep", 0.0019115762355644489, 31.622568093385215));
+  ASSERT_EQ(levels.size(), 4u);
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    EXPECT_LE(levels[k].flipped - levels[k].flippedAcrossFolds, k + 1 < levels.size() ? 2u : 0u) << "level " << k;
+    EXPECT_EQ(levels[k].degenerate, 0u) << "level " << k;
+    std::printf("level %zu: %zu triangles, %zu flipped, %zu across folds\n", k, levels[k].triangles, levels[k].flipped, levels[k].flippedAcrossFolds);
+  }
+  EXPECT_LT(levels.back().triangles, 60000u);
+}
+
+// sheet_fast_along_one_side_of_a_knot.brep (face_fuzz seed 606, input 122), face 0: a B-spline
+// sheet whose last v span runs at 23 on the mean and 1.75 by its first knot, but 65000 by its end,
+// where the speed differs 30x across the face. Divided after its speed only where an end's speed
+// over the span's mean exceeds the square of that spread (2860 > 930 here), it is meshed on every
+// level within its tolerance: 3104 triangles on the last (0.571%, 40 degrees), 6 flipped outside
+// folds. At the span's one scale its first level stopped at the work bound, 530 thousand triangles,
+// 7047 flipped outside folds.
+TEST(UvScaling, ASheetFastAlongOneSideOfAKnotIsMeshedBelowTheWorkBound) {
+  auto model = test::loadTestData("sheet_fast_along_one_side_of_a_knot.brep");
+  ASSERT_TRUE(model);
+  auto t = test::tessellate(*model, test::fuzzed("sheet_fast_along_one_side_of_a_knot.brep", 0.0057149881643732914,
+                                                 39.972228580148013));
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->report(0).status, FaceStatus::kOk) << t->report(0).reason;
+  const std::vector<FaceQuality> levels = test::expectEveryLevelWithinTolerance(*t, 0);
+  ASSERT_FALSE(levels.empty());
+  EXPECT_LT(levels.back().triangles, 20000u);
+  EXPECT_LE(levels.back().flipped - levels.back().flippedAcrossFolds, 10u);
 }
 
 // sheet_pinched_at_a_knot.brep (face_fuzz seed 505, input 131): a B-spline sheet whose u speed

@@ -606,8 +606,9 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double,
     }
     slope[k] = sum / 15;
     if (covered) smin = std::min(smin, slope[k]), smax = std::max(smax, slope[k]);
-    // Uneven: the speed differs between the thirds, and just inside an end it is far below the
-    // span's mean (where the span's one scale stretches the scaled plane most).
+    // Uneven: the speed differs between the thirds, and just inside an end it is far above the
+    // span's mean (where the span's one scale squeezes the surface into a sliver of the scaled
+    // plane) or far below it (where it stretches the scaled plane most).
     const double low = std::min({third[0], third[1], third[2]}),
                  high = std::max({third[0], third[1], third[2]});
     if (covered && high > kUnevenSpanSpread * low && std::isfinite(high)) {
@@ -615,8 +616,11 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double,
       double spreads[2];
       const double ends[2] = {meanSpeedAcross(uDir, knots[k] + 1e-3 * width, &spreads[0]),
                               meanSpeedAcross(uDir, knots[k + 1] - 1e-3 * width, &spreads[1])};
-      const int slow = ends[0] <= ends[1] ? 0 : 1;
-      if (ends[slow] * kSlowEndRatio < slope[k]) slowEnds.push_back({k, slow, ends[slow], spreads[slow]});
+      const int slow = ends[0] <= ends[1] ? 0 : 1, fast = 1 - slow;
+      if (ends[fast] > kFastEndRatio * slope[k] && ends[fast] > spreads[fast] * spreads[fast] * slope[k])
+        uneven.emplace_back(knots[k], knots[k + 1]);
+      else if (ends[slow] * kSlowEndRatio < slope[k])
+        slowEnds.push_back({k, slow, ends[slow], spreads[slow]});
     }
   }
   // Only where the slow end runs on at the speed of the covered span across the knot: a slow
@@ -635,6 +639,7 @@ void SurfaceEval::buildAxis(bool uDir, Axis& axis, std::vector<std::pair<double,
     if (slope[across] <= kUnevenSpanSpread * e.speed && e.speed <= kUnevenSpanSpread * slope[across])
       uneven.emplace_back(knots[e.span], knots[e.span + 1]);
   }
+  std::sort(uneven.begin(), uneven.end());  // fast ends first, then slow ones: in span order again
   if (!(smax > 4 * smin) || !std::isfinite(smax)) {
     uneven.clear();
     return;
